@@ -1,0 +1,378 @@
+/*
+ * zspan: a fixed-point, no-malloc visible-surface renderer that draws a 3D
+ * triangle scene one row (or band of rows) at a time into a caller's buffer.
+ *
+ * Freestanding C99. No floating point, no allocation: every byte the renderer
+ * uses lives in one arena the caller provides; ZS_ARENA_BYTES() gives its size
+ * at compile time.
+ *
+ * One frame:
+ *
+ *     static uint8_t arena[ZS_ARENA_BYTES(240, 240, 1000, 800, 256)];
+ *     zs_renderer r;
+ *     zs_config cfg = zs_config_default(240, 240, 1000, 800, 256);
+ *     zs_init(&r, arena, sizeof arena, &cfg);
+ *
+ *     zs_camera cam;
+ *     zs_camera_look_at(&cam, eye, target, up);               // Q16.16 vectors
+ *     zs_camera_perspective(&cam, ZS_FX(60), ZS_FX(1) / 10, ZS_FX(100));
+ *
+ *     zs_frame_begin(&r, &cam, ZS_MODE_SPAN);
+ *     zs_draw(&r, &mesh, &model_matrix);                      // any number
+ *     uint8_t line[240 * 2];
+ *     for (int y = 0; y < 240; y++)
+ *         zs_render_rows(&r, y, 1, line, sizeof line);        // send line to the panel
+ *
+ * Conventions
+ *  - Q16.16 fixed point (zs_fixed) for world quantities; ZS_FX(n) makes one.
+ *  - Right-handed world; the camera looks down its -Z; counter-clockwise
+ *    triangles (as seen by the camera) are front faces, others are culled.
+ *  - Screen: x right, y down, pixel (i, j) has its centre at (i + 0.5, j + 0.5).
+ *    Vertices are snapped to 1/16 pixel (28.4). Top-left fill rule: a pixel
+ *    whose centre lies exactly on a left or top edge belongs to the triangle.
+ *  - Depth: window depth z in [0, 1] (0 at the near plane, 1 at the far plane),
+ *    held per vertex in Q2.30 (ZS_DEPTH_ONE == 1.0) and interpolated as a plane
+ *    in screen space. Smaller is nearer. Exact ties go to the triangle that was
+ *    submitted first, in both visibility modes.
+ *  - Every range in this API is half-open [start, end) unless it says
+ *    "inclusive".
+ */
+#ifndef ZSPAN_ZSPAN_H
+#define ZSPAN_ZSPAN_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ------------------------------------------------------------------ */
+/* Fixed point                                                          */
+/* ------------------------------------------------------------------ */
+
+typedef int32_t zs_fixed;                 /* Q16.16 */
+#define ZS_FX_SHIFT 16
+#define ZS_FX_ONE ((zs_fixed)65536)
+/* Integer n as Q16.16 (|n| < 32768). */
+#define ZS_FX(n) ((zs_fixed)((n) * 65536))
+/* Rational a/b as Q16.16, rounded toward zero; for constants. */
+#define ZS_FX_RATIO(a, b) ((zs_fixed)(((int64_t)(a) * 65536) / (b)))
+#define ZS_DEPTH_ONE ((uint32_t)1 << 30)  /* window depth 1.0 in Q2.30 */
+
+typedef struct zs_vec3 {
+    zs_fixed x, y, z;
+} zs_vec3;
+
+/* Affine transform, Q16.16, row-major: p' = M[0..2][0..2] * p + M[.][3]. */
+typedef struct zs_mat34 {
+    zs_fixed m[3][4];
+} zs_mat34;
+
+zs_vec3 zs_vec3_make(zs_fixed x, zs_fixed y, zs_fixed z);
+/* Q16.16 multiply, rounded to nearest, saturated to the int32 range. */
+zs_fixed zs_fx_mul(zs_fixed a, zs_fixed b);
+/* Q16.16 divide, rounded toward zero, saturated; b == 0 gives +-INT32_MAX. */
+zs_fixed zs_fx_div(zs_fixed a, zs_fixed b);
+/* Sine and cosine of an angle in Q16.16 degrees (any value), result Q16.16. */
+zs_fixed zs_fx_sin_deg(zs_fixed deg);
+zs_fixed zs_fx_cos_deg(zs_fixed deg);
+/* Floor of the square root of a 64-bit unsigned integer. */
+uint32_t zs_isqrt64(uint64_t v);
+
+zs_mat34 zs_mat34_identity(void);
+/* out = a * b (apply b first), saturated. */
+zs_mat34 zs_mat34_mul(const zs_mat34 *a, const zs_mat34 *b);
+zs_mat34 zs_mat34_translate(zs_fixed x, zs_fixed y, zs_fixed z);
+zs_mat34 zs_mat34_scale(zs_fixed sx, zs_fixed sy, zs_fixed sz);
+/* Rotations by an angle in Q16.16 degrees, counter-clockwise looking down the
+ * axis toward the origin (right-handed). */
+zs_mat34 zs_mat34_rotate_x(zs_fixed deg);
+zs_mat34 zs_mat34_rotate_y(zs_fixed deg);
+zs_mat34 zs_mat34_rotate_z(zs_fixed deg);
+zs_vec3 zs_mat34_apply(const zs_mat34 *m, zs_vec3 p);
+
+/* ------------------------------------------------------------------ */
+/* Errors                                                               */
+/* ------------------------------------------------------------------ */
+
+typedef enum zs_status {
+    ZS_OK = 0,
+    ZS_ERR_NULL,          /* a required pointer argument is NULL */
+    ZS_ERR_SIZE,          /* width/height zero or above ZS_MAX_DIM */
+    ZS_ERR_CAPACITY,      /* a capacity is zero or above its limit */
+    ZS_ERR_ARENA_SMALL,   /* arena smaller than zs_arena_bytes() */
+    ZS_ERR_CAMERA,        /* eye == target, up parallel to view, or bad projection */
+    ZS_ERR_FOV,           /* field of view not in (0, 180) degrees */
+    ZS_ERR_DEPTH_RANGE,   /* near <= 0 or far <= near */
+    ZS_ERR_MESH,          /* mesh with no positions/indices, or a zero scale */
+    ZS_ERR_INDEX,         /* a triangle index >= vertex_count (draw rejected whole) */
+    ZS_ERR_STATE,         /* call out of order (e.g. draw before frame_begin) */
+    ZS_ERR_ROW,           /* row range outside the screen or before the next row */
+    ZS_ERR_BUFFER,        /* buffer stride too small for the width and format */
+    ZS_ERR_FORMAT,        /* unknown pixel format */
+    ZS_ERR_MODE,          /* unknown visibility or shading mode */
+    ZS_ERR_ARGUMENT,      /* any other argument out of its documented range */
+    ZS_STATUS_COUNT
+} zs_status;
+
+/* A short English description of a status code; never NULL. */
+const char *zs_strerror(zs_status status);
+
+/* ------------------------------------------------------------------ */
+/* Capacities and the arena                                             */
+/* ------------------------------------------------------------------ */
+
+#define ZS_MAX_DIM 2048          /* width and height limit, pixels */
+#define ZS_MAX_TRIANGLES 65535   /* per frame, after clipping */
+#define ZS_MAX_VERTICES 65535    /* per frame, including clip-made vertices */
+#define ZS_MAX_ACTIVE_EDGES 4096 /* edges crossing one row (2 per triangle) */
+
+/* Sizes of the records the arena holds (checked against sizeof in src/). */
+#define ZS_VERTEX_BYTES 16u
+#define ZS_TRIANGLE_BYTES 16u
+#define ZS_EDGE_BYTES 28u
+#define ZS_ACTIVE_BYTES 88u      /* per active triangle: depth and colour planes */
+#define ZS_ARENA_ALIGN 8u
+
+/* Internal: n rounded up to a multiple of ZS_ARENA_ALIGN. */
+#define ZS_ROUND8_(n) (((size_t)(n) + 7u) & ~(size_t)7u)
+
+/* Bytes of arena for a screen of w x h pixels holding up to max_tris
+ * triangle records and max_verts vertices per frame and max_edges active
+ * edges on one row (2 per triangle crossing the row). Includes the one-row
+ * depth line of the z-buffer mode and alignment slack; a compile-time
+ * constant when the arguments are. Per pool: vertices 16 B, triangles 16 B,
+ * row buckets 2 B per row, edges 32 B, active triangles 92 B (one per two
+ * edges), z-buffer line 10 B per column. */
+#define ZS_ARENA_BYTES(w, h, max_tris, max_verts, max_edges)                  \
+    (ZS_ROUND8_((size_t)(max_verts) * ZS_VERTEX_BYTES) +                       \
+     ZS_ROUND8_((size_t)(max_tris) * ZS_TRIANGLE_BYTES) +                      \
+     ZS_ROUND8_((size_t)(h) * 2u) +                                            \
+     ZS_ROUND8_((size_t)(max_edges) * ZS_EDGE_BYTES) +                         \
+     2u * ZS_ROUND8_((size_t)(max_edges) * 2u) +                               \
+     ZS_ROUND8_((size_t)(((max_edges) + 1u) / 2u) * ZS_ACTIVE_BYTES) +         \
+     2u * ZS_ROUND8_((size_t)(((max_edges) + 1u) / 2u) * 2u) +                 \
+     ZS_ROUND8_((size_t)(w) * 8u) + ZS_ROUND8_((size_t)(w) * 2u) +             \
+     ZS_ARENA_ALIGN)
+
+typedef struct zs_config {
+    uint16_t width, height;       /* pixels, 1..ZS_MAX_DIM */
+    uint16_t max_triangles;       /* 1..ZS_MAX_TRIANGLES */
+    uint16_t max_vertices;        /* 1..ZS_MAX_VERTICES */
+    uint16_t max_active_edges;    /* 2..ZS_MAX_ACTIVE_EDGES */
+} zs_config;
+
+zs_config zs_config_default(uint16_t width, uint16_t height, uint16_t max_triangles,
+                            uint16_t max_vertices, uint16_t max_active_edges);
+/* The same figure as ZS_ARENA_BYTES, at run time (0 for an invalid config). */
+size_t zs_arena_bytes(const zs_config *cfg);
+
+/* ------------------------------------------------------------------ */
+/* Camera                                                               */
+/* ------------------------------------------------------------------ */
+
+typedef struct zs_camera {
+    zs_mat34 view;           /* world -> eye (camera looks down eye -Z) */
+    zs_fixed fov_deg;        /* vertical field of view, Q16.16 degrees */
+    zs_fixed near_z, far_z;  /* positive distances, Q16.16 */
+    uint8_t has_view, has_projection;
+} zs_camera;
+
+/* View from eye toward target; up need not be perpendicular. All Q16.16. */
+zs_status zs_camera_look_at(zs_camera *cam, zs_vec3 eye, zs_vec3 target, zs_vec3 up);
+/* Perspective: vertical fov in (0, 180) degrees, 0 < near < far (Q16.16).
+ * The aspect ratio comes from the renderer's width and height (square pixels). */
+zs_status zs_camera_perspective(zs_camera *cam, zs_fixed fov_deg, zs_fixed near_z,
+                                zs_fixed far_z);
+/* Use an explicit world->eye transform instead of look_at. */
+zs_status zs_camera_set_view(zs_camera *cam, const zs_mat34 *view);
+
+/* ------------------------------------------------------------------ */
+/* Meshes                                                               */
+/* ------------------------------------------------------------------ */
+
+typedef uint32_t zs_color;   /* 0x00RRGGBB */
+#define ZS_RGB(r, g, b) ((zs_color)(((uint32_t)(r) << 16) | ((uint32_t)(g) << 8) | (uint32_t)(b)))
+
+/* A mesh in flash. Model-space position of vertex i is
+ * positions[3i .. 3i+2] * scale (scale in Q16.16, so the product is Q16.16);
+ * model coordinates must stay within +-32767 units. Normals are unit vectors
+ * in Q1.14 (16384 == 1.0). Colour sources, first present wins: per-vertex
+ * colours in Gouraud mode, per-face colours, per-vertex colours (averaged per
+ * face in flat mode), then `color`. */
+typedef struct zs_mesh {
+    const int16_t *positions;       /* 3 per vertex */
+    const uint16_t *indices;        /* 3 per triangle, counter-clockwise front */
+    const zs_color *face_colors;    /* optional, 1 per triangle */
+    const zs_color *vertex_colors;  /* optional, 1 per vertex */
+    const int16_t *face_normals;    /* optional, 3 per triangle (else computed) */
+    const int16_t *vertex_normals;  /* optional, 3 per vertex (else face normal) */
+    zs_fixed scale;                 /* Q16.16, non-zero */
+    uint16_t vertex_count;
+    uint16_t triangle_count;
+    zs_color color;                 /* used when no colour array is given */
+} zs_mesh;
+
+/* ------------------------------------------------------------------ */
+/* Shading                                                              */
+/* ------------------------------------------------------------------ */
+
+typedef enum zs_visibility {
+    ZS_MODE_SPAN = 0,   /* spanning scanline: one depth decision per span */
+    ZS_MODE_ZLINE = 1   /* scanline z-buffer: a depth per pixel of the row */
+} zs_visibility;
+
+typedef enum zs_shading {
+    ZS_SHADE_FLAT = 0,     /* one colour per triangle (lit per face) */
+    ZS_SHADE_GOURAUD = 1   /* colours per vertex (lit per vertex), interpolated */
+} zs_shading;
+
+/* Output pixel formats for zs_render_rows. */
+typedef enum zs_format {
+    ZS_FMT_RGB565_BE = 0,  /* 2 bytes, big-endian: the SPI wire order */
+    ZS_FMT_RGB565 = 1,     /* 2 bytes, native uint16_t */
+    ZS_FMT_RGB666 = 2,     /* 3 bytes R, G, B, each in bits 7..2 */
+    ZS_FMT_GRAY8 = 3,      /* 1 byte luma (77 R + 150 G + 29 B) / 256 */
+    ZS_FMT_RGB888 = 4,     /* 3 bytes R, G, B */
+    ZS_FMT_ID16 = 5,       /* 2 bytes native: triangle tag (see zs_draw), 0 = none */
+    ZS_FMT_COUNT
+} zs_format;
+
+/* Bytes per pixel of a format (0 for an unknown one). */
+unsigned zs_format_bytes(zs_format fmt);
+
+#define ZS_MAX_LIGHTS 2
+
+typedef struct zs_light {
+    zs_vec3 direction;   /* world space, toward the light; need not be unit */
+    zs_fixed intensity;  /* Q16.16, 1.0 = full */
+} zs_light;
+
+typedef struct zs_fog {
+    zs_color color;
+    zs_fixed start, end; /* eye distances (Q16.16): no fog before start, all fog from end */
+    uint8_t enabled;
+} zs_fog;
+
+/* Per-frame look. Lighting: colour * (ambient + sum of max(0, N.L) * intensity),
+ * saturated; with no light and ambient 1.0 the colours are used as they are. */
+typedef struct zs_shade_params {
+    zs_shading shading;
+    zs_format format;
+    zs_color background;
+    zs_fixed ambient;                /* Q16.16 */
+    uint8_t light_count;             /* 0..ZS_MAX_LIGHTS */
+    zs_light lights[ZS_MAX_LIGHTS];
+    zs_fog fog;
+} zs_shade_params;
+
+/* Flat, RGB565 big-endian, black background, unlit (ambient 1.0), no fog. */
+zs_shade_params zs_shade_default(void);
+
+/* ------------------------------------------------------------------ */
+/* Frame statistics                                                     */
+/* ------------------------------------------------------------------ */
+
+/* Every submitted triangle is counted in exactly one of culled, rejected,
+ * empty, dropped and stored:
+ *   tris_submitted == tris_culled + tris_rejected + tris_empty
+ *                     + tris_dropped + tris_stored.
+ * A triangle split by clipping counts once (stored if any piece was stored,
+ * else dropped if any piece hit a full pool, else empty if any piece was
+ * empty, else culled; rejected if clipping left nothing); tris_clipped counts
+ * those that needed clipping, records counts the pieces stored. */
+typedef struct zs_stats {
+    uint32_t tris_submitted;   /* triangles passed to zs_draw */
+    uint32_t tris_culled;      /* back-facing or zero area on screen */
+    uint32_t tris_rejected;    /* wholly outside the view volume or the screen */
+    uint32_t tris_clipped;     /* needed clipping (near/far/guard band) */
+    uint32_t tris_empty;       /* cover no pixel centre by their bounding box */
+    uint32_t tris_dropped;     /* lost to a full pool (capacity policy) */
+    uint32_t tris_stored;      /* submitted triangles with at least one record */
+    uint32_t records;          /* triangle records stored (pieces after clipping) */
+    uint32_t tris_drawn;       /* records that were activated on some row */
+    uint32_t verts_stored;     /* vertex pool use */
+    uint32_t verts_dropped;    /* vertices that did not fit the pool */
+    uint32_t edges_dropped;    /* triangles not activated: edge pool full */
+    uint32_t saturated;        /* coordinates clamped to the representable range */
+    uint32_t rows;             /* rows rendered */
+    uint32_t spans;            /* spans written (background spans included) */
+    uint32_t max_active_edges; /* most edges active on one row */
+    uint32_t depth_evals;      /* plane evaluations for visibility */
+    uint32_t crossings;        /* penetration crossings split inside a row */
+    uint32_t pixels_shaded;    /* pixel writes (== width * rows in span mode) */
+} zs_stats;
+
+/* ------------------------------------------------------------------ */
+/* The renderer                                                         */
+/* ------------------------------------------------------------------ */
+
+/* Holds the arena and the frame state. Fields are private (they may change
+ * between versions); the struct is public so it can be allocated statically. */
+typedef struct zs_renderer {
+    zs_config cfg;
+    zs_stats stats;
+    zs_shade_params shade;
+    zs_camera cam;
+    /* private: arena pools */
+    void *verts, *tris, *buckets, *edges, *ael, *edge_free, *active, *in_set,
+        *active_free, *zline_depth, *zline_owner;
+    /* private: frame state */
+    zs_vec3 light_dir[ZS_MAX_LIGHTS]; /* unit, Q16.16 */
+    zs_fixed proj_sx, proj_sy;        /* clip-space x and y scale */
+    uint32_t tag_counter;
+    int32_t next_row;
+    uint16_t n_verts, n_tris, n_ael, n_edge_free, n_active_free, n_set;
+    uint8_t state, mode, bpp, pad_;
+    void (*setup_hook)(void *user, uint16_t tag, const int32_t xy[6], const uint32_t z[3]);
+    void *setup_hook_user;
+} zs_renderer;
+
+/* Checks the config and carves the arena (any alignment; ZS_ARENA_BYTES
+ * includes the slack). ZS_ERR_ARENA_SMALL if arena_size < zs_arena_bytes(cfg). */
+zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_config *cfg);
+
+/* Starts a frame: clears the pools and statistics. The camera is copied. */
+zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mode);
+/* Shading for the frame; call after zs_frame_begin and before the first
+ * zs_draw (zs_frame_begin resets it to zs_shade_default()). */
+zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *params);
+
+/* Transforms, culls, clips and stores a mesh's triangles. model may be NULL
+ * (identity). Each submitted triangle gets the next tag (1, 2, 3, ... in
+ * submission order across the frame, wrapping past 65535), which ZS_FMT_ID16
+ * writes. Triangles that do not fit the pools are dropped and counted. */
+zs_status zs_draw(zs_renderer *r, const zs_mesh *mesh, const zs_mat34 *model);
+
+/* Renders rows y0 .. y0+rows-1 into buf (row k at buf + k*stride) in the
+ * frame's format. Rows must be asked for in increasing order; rows skipped
+ * over are not rendered (useful for partial updates). Every pixel of each row
+ * is written exactly once in span mode. */
+zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t stride);
+
+/* Called with each finished band: rows y0 .. y0+rows-1, at buf with stride. */
+typedef int (*zs_band_fn)(void *user, int y0, int rows, const void *buf, size_t stride);
+
+/* Convenience: renders the rest of the frame band by band into buf (band_rows
+ * rows of stride bytes) and hands each band to fn. A non-zero return from fn
+ * stops the frame early (ZS_ERR_STATE is not set; ZS_OK is returned). */
+zs_status zs_render_frame(zs_renderer *r, void *buf, size_t stride, int band_rows,
+                          zs_band_fn fn, void *user);
+
+/* Statistics of the current (or last) frame. */
+const zs_stats *zs_frame_stats(const zs_renderer *r);
+
+/* Debug/verification hook: called for every triangle record stored by
+ * zs_draw with its tag, the snapped screen vertices (x0,y0,x1,y1,x2,y2 in
+ * 28.4 pixels, y down) and window depths (Q2.30). NULL disables. */
+void zs_set_setup_hook(zs_renderer *r,
+                       void (*fn)(void *user, uint16_t tag, const int32_t xy[6],
+                                  const uint32_t z[3]),
+                       void *user);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* ZSPAN_ZSPAN_H */

@@ -1,0 +1,302 @@
+/* Fixed-point arithmetic: Q16.16 scalars, trigonometry, square roots, 3x4
+ * matrices. Every product is formed in 64 bits and saturated back, so no
+ * input can overflow (signed overflow is undefined behaviour in C). */
+#include "zs_internal.h"
+
+int64_t zs_floor_div64(int64_t a, int64_t b)
+{
+    int64_t q = a / b;
+    if ((a % b != 0) && ((a < 0) != (b < 0)))
+        q--;
+    return q;
+}
+
+int64_t zs_round_div64(int64_t a, int64_t b)
+{
+    /* floor((a + b/2) / b) without forming a + b/2 when it could overflow */
+    int64_t q = zs_floor_div64(a, b);
+    int64_t rem = a - q * b; /* 0 <= rem < b */
+    if (rem >= b - rem)
+        q++;
+    return q;
+}
+
+int32_t zs_sat32(int64_t v, uint32_t *saturated)
+{
+    if (v > INT32_MAX) {
+        if (saturated)
+            (*saturated)++;
+        return INT32_MAX;
+    }
+    if (v < -INT32_MAX) {
+        if (saturated)
+            (*saturated)++;
+        return -INT32_MAX;
+    }
+    return (int32_t)v;
+}
+
+zs_vec3 zs_vec3_make(zs_fixed x, zs_fixed y, zs_fixed z)
+{
+    zs_vec3 v;
+    v.x = x;
+    v.y = y;
+    v.z = z;
+    return v;
+}
+
+zs_fixed zs_fx_mul(zs_fixed a, zs_fixed b)
+{
+    int64_t p = (int64_t)a * b;
+    return zs_sat32(zs_floor_div64(p + 32768, 65536), 0);
+}
+
+zs_fixed zs_fx_div(zs_fixed a, zs_fixed b)
+{
+    if (b == 0)
+        return a < 0 ? -INT32_MAX : INT32_MAX;
+    return zs_sat32(((int64_t)a * 65536) / b, 0);
+}
+
+uint32_t zs_isqrt64(uint64_t v)
+{
+    uint64_t res = 0;
+    uint64_t bit = (uint64_t)1 << 62;
+    while (bit > v)
+        bit >>= 2;
+    while (bit != 0) {
+        if (v >= res + bit) {
+            v -= res + bit;
+            res = (res >> 1) + bit;
+        } else {
+            res >>= 1;
+        }
+        bit >>= 2;
+    }
+    return (uint32_t)res;
+}
+
+/* a * b in Q30, rounded half up; |a|, |b| <= 2^31. */
+static int64_t mul_q30(int64_t a, int64_t b)
+{
+    return zs_floor_div64(a * b + ((int64_t)1 << 29), (int64_t)1 << 30);
+}
+
+/* sin x and cos x for 0 <= x <= pi/4 (x in Q30), by their Taylor series. */
+static int64_t sin_small(int64_t x)
+{
+    int64_t x2 = mul_q30(x, x);
+    /* x (1 - x2/6 (1 - x2/20 (1 - x2/42 (1 - x2/72 (1 - x2/110))))) */
+    int64_t one = (int64_t)1 << 30;
+    int64_t t = one - x2 / 110;
+    t = one - mul_q30(x2, t) / 72;
+    t = one - mul_q30(x2, t) / 42;
+    t = one - mul_q30(x2, t) / 20;
+    t = one - mul_q30(x2, t) / 6;
+    return mul_q30(x, t);
+}
+
+static int64_t cos_small(int64_t x)
+{
+    int64_t x2 = mul_q30(x, x);
+    int64_t one = (int64_t)1 << 30;
+    int64_t t = one - x2 / 132;
+    t = one - mul_q30(x2, t) / 90;
+    t = one - mul_q30(x2, t) / 56;
+    t = one - mul_q30(x2, t) / 30;
+    t = one - mul_q30(x2, t) / 12;
+    t = one - mul_q30(x2, t) / 2;
+    return t;
+}
+
+int32_t zs_sin_q30(zs_fixed deg)
+{
+    const int64_t full = (int64_t)360 * 65536;
+    const int64_t quarter = (int64_t)90 * 65536;
+    /* pi / 180 in Q40, so degrees Q16 * this >> 26 is radians Q30 */
+    const int64_t rad_per_deg_q40 = 19190098281LL;
+    int64_t a = (int64_t)deg % full;
+    int neg = 0;
+    int64_t x, s;
+    if (a < 0)
+        a += full;
+    if (a >= full / 2) { /* sin(a) = -sin(a - 180) */
+        a -= full / 2;
+        neg = 1;
+    }
+    if (a > quarter) /* sin(a) = sin(180 - a) */
+        a = full / 2 - a;
+    /* now 0 <= a <= 90 degrees */
+    if (a <= quarter / 2) {
+        x = zs_floor_div64(a * rad_per_deg_q40 + ((int64_t)1 << 25), (int64_t)1 << 26);
+        s = sin_small(x);
+    } else {
+        x = zs_floor_div64((quarter - a) * rad_per_deg_q40 + ((int64_t)1 << 25),
+                           (int64_t)1 << 26);
+        s = cos_small(x);
+    }
+    if (s > ((int64_t)1 << 30))
+        s = (int64_t)1 << 30;
+    if (s < 0)
+        s = 0;
+    return (int32_t)(neg ? -s : s);
+}
+
+zs_fixed zs_fx_sin_deg(zs_fixed deg)
+{
+    return (zs_fixed)zs_floor_div64((int64_t)zs_sin_q30(deg) + 8192, 16384);
+}
+
+zs_fixed zs_fx_cos_deg(zs_fixed deg)
+{
+    /* cos(a) = sin(a + 90); reduce first so the addition cannot overflow */
+    int64_t a = (int64_t)deg % ((int64_t)360 * 65536) + (int64_t)90 * 65536;
+    return (zs_fixed)zs_floor_div64((int64_t)zs_sin_q30((zs_fixed)a) + 8192, 16384);
+}
+
+static int64_t abs64(int64_t v)
+{
+    return v < 0 ? -v : v;
+}
+
+void zs_shrink3(int64_t v[3], int64_t limit)
+{
+    while (abs64(v[0]) >= limit || abs64(v[1]) >= limit || abs64(v[2]) >= limit) {
+        v[0] /= 2;
+        v[1] /= 2;
+        v[2] /= 2;
+    }
+}
+
+int zs_normalize3(const int64_t v[3], int32_t out[3])
+{
+    int64_t t[3];
+    uint64_t len2;
+    uint32_t len;
+    int i;
+    t[0] = v[0];
+    t[1] = v[1];
+    t[2] = v[2];
+    /* keep components below 2^30 so the squares sum below 2^62 */
+    zs_shrink3(t, (int64_t)1 << 30);
+    /* and above 2^20 where possible, for precision */
+    while (t[0] != 0 || t[1] != 0 || t[2] != 0) {
+        if (abs64(t[0]) >= ((int64_t)1 << 20) || abs64(t[1]) >= ((int64_t)1 << 20) ||
+            abs64(t[2]) >= ((int64_t)1 << 20))
+            break;
+        t[0] *= 2;
+        t[1] *= 2;
+        t[2] *= 2;
+    }
+    len2 = (uint64_t)(t[0] * t[0]) + (uint64_t)(t[1] * t[1]) + (uint64_t)(t[2] * t[2]);
+    len = zs_isqrt64(len2);
+    if (len == 0) {
+        out[0] = out[1] = out[2] = 0;
+        return 0;
+    }
+    for (i = 0; i < 3; i++)
+        out[i] = (int32_t)zs_round_div64(t[i] * 65536, (int64_t)len);
+    return 1;
+}
+
+int64_t zs_dot3_q16(const int32_t a[3], const int32_t b[3])
+{
+    int64_t hi = 0, lo = 0;
+    int i;
+    for (i = 0; i < 3; i++) {
+        int64_t p = (int64_t)a[i] * b[i];
+        int64_t q = zs_floor_div64(p, 65536);
+        hi += q;
+        lo += p - q * 65536;
+    }
+    return hi + zs_floor_div64(lo + 32768, 65536);
+}
+
+zs_mat34 zs_mat34_identity(void)
+{
+    zs_mat34 m;
+    memset(&m, 0, sizeof m);
+    m.m[0][0] = m.m[1][1] = m.m[2][2] = ZS_FX_ONE;
+    return m;
+}
+
+zs_mat34 zs_mat34_mul(const zs_mat34 *a, const zs_mat34 *b)
+{
+    zs_mat34 o;
+    int i, j;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 4; j++) {
+            int32_t col[3];
+            int64_t s;
+            col[0] = b->m[0][j];
+            col[1] = b->m[1][j];
+            col[2] = b->m[2][j];
+            s = zs_dot3_q16(a->m[i], col);
+            if (j == 3)
+                s += a->m[i][3];
+            o.m[i][j] = zs_sat32(s, 0);
+        }
+    }
+    return o;
+}
+
+zs_mat34 zs_mat34_translate(zs_fixed x, zs_fixed y, zs_fixed z)
+{
+    zs_mat34 m = zs_mat34_identity();
+    m.m[0][3] = x;
+    m.m[1][3] = y;
+    m.m[2][3] = z;
+    return m;
+}
+
+zs_mat34 zs_mat34_scale(zs_fixed sx, zs_fixed sy, zs_fixed sz)
+{
+    zs_mat34 m;
+    memset(&m, 0, sizeof m);
+    m.m[0][0] = sx;
+    m.m[1][1] = sy;
+    m.m[2][2] = sz;
+    return m;
+}
+
+/* Rotation in the plane of axes a -> b (counter-clockwise about the third). */
+static zs_mat34 rotation(zs_fixed deg, int a, int b)
+{
+    zs_mat34 m = zs_mat34_identity();
+    zs_fixed c = zs_fx_cos_deg(deg), s = zs_fx_sin_deg(deg);
+    m.m[a][a] = c;
+    m.m[a][b] = -s;
+    m.m[b][a] = s;
+    m.m[b][b] = c;
+    return m;
+}
+
+zs_mat34 zs_mat34_rotate_x(zs_fixed deg)
+{
+    return rotation(deg, 1, 2);
+}
+
+zs_mat34 zs_mat34_rotate_y(zs_fixed deg)
+{
+    return rotation(deg, 2, 0);
+}
+
+zs_mat34 zs_mat34_rotate_z(zs_fixed deg)
+{
+    return rotation(deg, 0, 1);
+}
+
+zs_vec3 zs_mat34_apply(const zs_mat34 *m, zs_vec3 p)
+{
+    int32_t in[3];
+    int32_t out[3];
+    int i;
+    in[0] = p.x;
+    in[1] = p.y;
+    in[2] = p.z;
+    for (i = 0; i < 3; i++) {
+        int64_t s = zs_dot3_q16(m->m[i], in) + m->m[i][3];
+        out[i] = zs_sat32(s, 0);
+    }
+    return zs_vec3_make(out[0], out[1], out[2]);
+}

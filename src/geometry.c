@@ -1,0 +1,285 @@
+/* Geometry stage of zs_draw: transform vertices to clip space, light them,
+ * trivially accept or reject triangles by outcodes, clip the rest, and hand
+ * every screen triangle to setup. */
+#include "zs_internal.h"
+
+#define WHITE 0xFFFFFFu
+#define REJECT_MASK                                                                       \
+    (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_LEFT | ZS_OUT_RIGHT | ZS_OUT_BOTTOM | ZS_OUT_TOP)
+
+typedef struct draw_ctx {
+    zs_renderer *r;
+    const zs_mesh *mesh;
+    zs_mat34 model;     /* model -> world, for normals */
+    zs_mat34 mv;        /* model -> eye */
+    int lit;            /* lighting changes colours */
+    int vertex_light;   /* lighting per vertex (Gouraud with vertex normals) */
+    int vertex_color;   /* Gouraud with per-vertex colours */
+    uint32_t tri_flags;
+} draw_ctx;
+
+/* Model-space vertex i to clip space (Q16.16). */
+static void to_clip(const draw_ctx *c, uint32_t i, int32_t *xc, int32_t *yc, int32_t *w)
+{
+    zs_renderer *r = c->r;
+    const int16_t *pos = c->mesh->positions + 3u * i;
+    int32_t p[3];
+    int32_t e[3];
+    int k;
+    for (k = 0; k < 3; k++)
+        p[k] = zs_sat32((int64_t)pos[k] * c->mesh->scale, &r->stats.saturated);
+    for (k = 0; k < 3; k++)
+        e[k] = zs_sat32(zs_dot3_q16(c->mv.m[k], p) + c->mv.m[k][3], &r->stats.saturated);
+    *xc = zs_sat32(zs_floor_div64((int64_t)e[0] * r->proj_sx + 32768, 65536),
+                   &r->stats.saturated);
+    *yc = zs_sat32(zs_floor_div64((int64_t)e[1] * r->proj_sy + 32768, 65536),
+                   &r->stats.saturated);
+    *w = -e[2];
+}
+
+/* Light intensity (Q16.16) for a model-space normal direction n. */
+static zs_fixed light_intensity(const draw_ctx *c, const int64_t n_model[3])
+{
+    const zs_renderer *r = c->r;
+    int64_t n[3];
+    int32_t nm[3], unit[3];
+    int64_t total = r->shade.ambient;
+    int k;
+    n[0] = n_model[0];
+    n[1] = n_model[1];
+    n[2] = n_model[2];
+    zs_shrink3(n, (int64_t)1 << 24);
+    nm[0] = (int32_t)n[0];
+    nm[1] = (int32_t)n[1];
+    nm[2] = (int32_t)n[2];
+    for (k = 0; k < 3; k++) /* the model's 3x3 takes normals to world space */
+        n[k] = zs_dot3_q16(c->model.m[k], nm);
+    if (zs_normalize3(n, unit)) {
+        for (k = 0; k < r->shade.light_count; k++) {
+            int32_t l[3];
+            int64_t d;
+            l[0] = r->light_dir[k].x;
+            l[1] = r->light_dir[k].y;
+            l[2] = r->light_dir[k].z;
+            d = zs_dot3_q16(unit, l);
+            if (d > 0)
+                total += zs_floor_div64(d * r->shade.lights[k].intensity, 65536);
+        }
+    }
+    if (total > ((int64_t)16 << 16))
+        total = (int64_t)16 << 16;
+    return (zs_fixed)total;
+}
+
+static uint32_t fog_byte(const zs_renderer *r, int32_t w)
+{
+    const zs_fog *f = &r->shade.fog;
+    int64_t t;
+    if (!f->enabled || w <= f->start)
+        return 0;
+    if (w >= f->end)
+        return 255;
+    t = ((int64_t)w - f->start) * 255 / ((int64_t)f->end - f->start);
+    return (uint32_t)t;
+}
+
+/* Per-vertex shade word: RGB (colour or light multiplier) and fog. */
+static uint32_t vertex_shade(const draw_ctx *c, uint32_t i, int32_t w)
+{
+    uint32_t rgb = c->vertex_color ? (c->mesh->vertex_colors[i] & WHITE) : WHITE;
+    if (c->vertex_light) {
+        const int16_t *nv = c->mesh->vertex_normals + 3u * i;
+        int64_t n[3];
+        n[0] = nv[0];
+        n[1] = nv[1];
+        n[2] = nv[2];
+        rgb = zs_light_color(rgb, light_intensity(c, n));
+    }
+    return rgb | (fog_byte(c->r, w) << 24);
+}
+
+static uint32_t average3(uint32_t a, uint32_t b, uint32_t c)
+{
+    uint32_t out = 0;
+    int s;
+    for (s = 0; s < 24; s += 8) {
+        uint32_t sum = ((a >> s) & 255u) + ((b >> s) & 255u) + ((c >> s) & 255u);
+        out |= ((sum + 1u) / 3u) << s;
+    }
+    return out;
+}
+
+/* Face colour with flags, lit per face when lighting is not per vertex. */
+static uint32_t face_color(const draw_ctx *c, uint32_t t, const uint16_t idx[3])
+{
+    const zs_mesh *m = c->mesh;
+    uint32_t col;
+    if (c->vertex_color)
+        col = WHITE;
+    else if (m->face_colors)
+        col = m->face_colors[t] & WHITE;
+    else if (m->vertex_colors)
+        col = average3(m->vertex_colors[idx[0]], m->vertex_colors[idx[1]],
+                       m->vertex_colors[idx[2]]);
+    else
+        col = m->color & WHITE;
+    if (c->lit && !c->vertex_light) {
+        int64_t n[3];
+        if (m->face_normals) {
+            const int16_t *fn = m->face_normals + 3u * t;
+            n[0] = fn[0];
+            n[1] = fn[1];
+            n[2] = fn[2];
+        } else {
+            const int16_t *p0 = m->positions + 3u * idx[0];
+            const int16_t *p1 = m->positions + 3u * idx[1];
+            const int16_t *p2 = m->positions + 3u * idx[2];
+            int64_t a[3], b[3];
+            int k;
+            for (k = 0; k < 3; k++) {
+                a[k] = (int64_t)p1[k] - p0[k];
+                b[k] = (int64_t)p2[k] - p0[k];
+            }
+            n[0] = a[1] * b[2] - a[2] * b[1];
+            n[1] = a[2] * b[0] - a[0] * b[2];
+            n[2] = a[0] * b[1] - a[1] * b[0];
+            if (m->scale < 0) { /* a mirrored mesh turns its normals */
+                n[0] = -n[0];
+                n[1] = -n[1];
+                n[2] = -n[2];
+            }
+        }
+        col = zs_light_color(col, light_intensity(c, n));
+    }
+    return col | (c->tri_flags << 24);
+}
+
+/* Outcome priority when pieces of one clipped triangle end differently. */
+static int merge_outcome(int have, int piece)
+{
+    static const int rank[5] = {4, 1, 2, 0, 3}; /* stored > dropped > empty > culled > rejected */
+    return rank[piece] > rank[have] ? piece : have;
+}
+
+static void count_outcome(zs_stats *s, int outcome)
+{
+    switch (outcome) {
+    case ZS_SETUP_STORED: s->tris_stored++; break;
+    case ZS_SETUP_CULLED: s->tris_culled++; break;
+    case ZS_SETUP_EMPTY: s->tris_empty++; break;
+    case ZS_SETUP_DROPPED: s->tris_dropped++; break;
+    default: s->tris_rejected++; break;
+    }
+}
+
+/* A triangle with a vertex outside near/far/guard: reject or clip it. */
+static int clip_and_setup(draw_ctx *c, uint16_t base, const uint16_t idx[3], uint32_t t,
+                          uint16_t tag)
+{
+    zs_renderer *r = c->r;
+    zs_vert *pool = (zs_vert *)r->verts;
+    zs_svert in[3], out[9];
+    unsigned and_codes = 0xFFu;
+    int n, k, outcome = ZS_SETUP_REJECTED;
+    uint32_t color;
+    for (k = 0; k < 3; k++) {
+        const zs_vert *pv = &pool[base + idx[k]];
+        to_clip(c, idx[k], &in[k].xc, &in[k].yc, &in[k].w);
+        in[k].shade = pv->shade;
+        in[k].pool = (pv->z & ZS_VERT_UNPROJECTED) ? (uint16_t)ZS_NONE : (uint16_t)(base + idx[k]);
+        and_codes &= zs_outcode(r, in[k].xc, in[k].yc, in[k].w);
+    }
+    if (and_codes & REJECT_MASK)
+        return ZS_SETUP_REJECTED;
+    r->stats.tris_clipped++;
+    n = zs_clip_polygon(r, in, 3, out);
+    if (n < 3)
+        return ZS_SETUP_REJECTED;
+    color = face_color(c, t, idx);
+    for (k = 0; k < n; k++)
+        if (out[k].pool == ZS_NONE)
+            out[k].pool = zs_project_vertex(r, out[k].xc, out[k].yc, out[k].w, out[k].shade);
+    for (k = 1; k + 1 < n; k++) {
+        int piece;
+        if (out[0].pool == ZS_NONE || out[k].pool == ZS_NONE || out[k + 1].pool == ZS_NONE)
+            piece = ZS_SETUP_DROPPED;
+        else
+            piece = zs_setup_triangle(r, out[0].pool, out[k].pool, out[k + 1].pool, color, tag);
+        outcome = merge_outcome(outcome, piece);
+    }
+    return outcome;
+}
+
+zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
+{
+    draw_ctx c;
+    zs_vert *pool;
+    uint32_t i, t, vfit, room;
+    uint16_t base;
+    if (!r || !m)
+        return ZS_ERR_NULL;
+    if (r->state != ZS_STATE_OPEN)
+        return ZS_ERR_STATE;
+    if (!m->positions || !m->indices || m->scale == 0 || m->vertex_count == 0)
+        return ZS_ERR_MESH;
+    for (i = 0; i < 3u * m->triangle_count; i++)
+        if (m->indices[i] >= m->vertex_count)
+            return ZS_ERR_INDEX;
+    c.r = r;
+    c.mesh = m;
+    c.model = model ? *model : zs_mat34_identity();
+    c.mv = zs_mat34_mul(&r->cam.view, &c.model);
+    c.lit = r->shade.light_count > 0 || r->shade.ambient != ZS_FX_ONE;
+    c.vertex_light = r->shade.shading == ZS_SHADE_GOURAUD && c.lit && m->vertex_normals != 0;
+    c.vertex_color = r->shade.shading == ZS_SHADE_GOURAUD && m->vertex_colors != 0;
+    c.tri_flags = ((c.vertex_light || c.vertex_color) ? ZS_TRI_MODULATE : 0u) |
+                  (r->shade.fog.enabled ? ZS_TRI_FOG : 0u);
+
+    /* vertices: transform all that fit the pool (capacity policy: the last
+     * vertices are dropped, and so are the triangles that use them) */
+    pool = (zs_vert *)r->verts;
+    base = r->n_verts;
+    room = (uint32_t)r->cfg.max_vertices - base;
+    vfit = m->vertex_count < room ? m->vertex_count : room;
+    r->stats.verts_dropped += m->vertex_count - vfit;
+    for (i = 0; i < vfit; i++) {
+        zs_vert *v = &pool[base + i];
+        int32_t xc, yc, w;
+        to_clip(&c, i, &xc, &yc, &w);
+        v->shade = vertex_shade(&c, i, w);
+        if (zs_outcode(r, xc, yc, w) & (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_GUARD))
+            v->z = ZS_VERT_UNPROJECTED;
+        else
+            zs_project(r, xc, yc, w, &v->x, &v->y, &v->z);
+    }
+    r->n_verts = (uint16_t)(base + vfit);
+    r->stats.verts_stored = r->n_verts;
+
+    for (t = 0; t < m->triangle_count; t++) {
+        uint16_t idx[3];
+        uint16_t tag = (uint16_t)(++r->tag_counter);
+        const zs_vert *v0, *v1, *v2;
+        int outcome;
+        r->stats.tris_submitted++;
+        idx[0] = m->indices[3u * t];
+        idx[1] = m->indices[3u * t + 1u];
+        idx[2] = m->indices[3u * t + 2u];
+        if (idx[0] >= vfit || idx[1] >= vfit || idx[2] >= vfit) {
+            r->stats.tris_dropped++;
+            continue;
+        }
+        v0 = &pool[base + idx[0]];
+        v1 = &pool[base + idx[1]];
+        v2 = &pool[base + idx[2]];
+        if ((v0->z | v1->z | v2->z) & ZS_VERT_UNPROJECTED) {
+            outcome = clip_and_setup(&c, base, idx, t, tag);
+        } else if (zs_area2(v0, v1, v2) >= 0) {
+            outcome = ZS_SETUP_CULLED; /* cheap test before lighting the face */
+        } else {
+            outcome = zs_setup_triangle(r, (uint16_t)(base + idx[0]), (uint16_t)(base + idx[1]),
+                                        (uint16_t)(base + idx[2]), face_color(&c, t, idx), tag);
+        }
+        count_outcome(&r->stats, outcome);
+    }
+    return ZS_OK;
+}

@@ -1,0 +1,246 @@
+/* The renderer context: configuration, arena layout, frame life cycle and
+ * the band API. */
+#include "zs_internal.h"
+
+zs_config zs_config_default(uint16_t width, uint16_t height, uint16_t max_triangles,
+                            uint16_t max_vertices, uint16_t max_active_edges)
+{
+    zs_config c;
+    c.width = width;
+    c.height = height;
+    c.max_triangles = max_triangles;
+    c.max_vertices = max_vertices;
+    c.max_active_edges = max_active_edges;
+    return c;
+}
+
+static zs_status check_config(const zs_config *c)
+{
+    if (!c)
+        return ZS_ERR_NULL;
+    if (c->width == 0 || c->height == 0 || c->width > ZS_MAX_DIM || c->height > ZS_MAX_DIM)
+        return ZS_ERR_SIZE;
+    if (c->max_triangles == 0 || c->max_vertices < 3 || c->max_active_edges < 2 ||
+        c->max_active_edges > ZS_MAX_ACTIVE_EDGES)
+        return ZS_ERR_CAPACITY;
+    return ZS_OK;
+}
+
+size_t zs_arena_bytes(const zs_config *cfg)
+{
+    if (check_config(cfg) != ZS_OK)
+        return 0;
+    return ZS_ARENA_BYTES(cfg->width, cfg->height, cfg->max_triangles, cfg->max_vertices,
+                          cfg->max_active_edges);
+}
+
+/* Takes n bytes (rounded up to 8) from the cursor. */
+static void *carve(uint8_t **cursor, size_t n)
+{
+    void *p = *cursor;
+    *cursor += ZS_ROUND8_(n);
+    return p;
+}
+
+zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_config *cfg)
+{
+    zs_status st;
+    uint8_t *cur;
+    size_t need, e, a;
+    if (!r || !arena || !cfg)
+        return ZS_ERR_NULL;
+    st = check_config(cfg);
+    if (st != ZS_OK)
+        return st;
+    need = zs_arena_bytes(cfg);
+    if (arena_size < need)
+        return ZS_ERR_ARENA_SMALL;
+    memset(r, 0, sizeof *r);
+    r->cfg = *cfg;
+    e = cfg->max_active_edges;
+    a = (e + 1u) / 2u;
+    cur = (uint8_t *)arena;
+    cur += (ZS_ARENA_ALIGN - ((uintptr_t)cur & (ZS_ARENA_ALIGN - 1u))) & (ZS_ARENA_ALIGN - 1u);
+    r->verts = carve(&cur, (size_t)cfg->max_vertices * sizeof(zs_vert));
+    r->tris = carve(&cur, (size_t)cfg->max_triangles * sizeof(zs_tri));
+    r->buckets = carve(&cur, (size_t)cfg->height * 2u);
+    r->edges = carve(&cur, e * sizeof(zs_edge));
+    r->ael = carve(&cur, e * 2u);
+    r->edge_free = carve(&cur, e * 2u);
+    r->active = carve(&cur, a * sizeof(zs_active));
+    r->in_set = carve(&cur, a * 2u);
+    r->active_free = carve(&cur, a * 2u);
+    r->zline_depth = carve(&cur, (size_t)cfg->width * 8u);
+    r->zline_owner = carve(&cur, (size_t)cfg->width * 2u);
+    r->shade = zs_shade_default();
+    r->bpp = (uint8_t)zs_format_bytes(r->shade.format);
+    r->state = ZS_STATE_READY;
+    return ZS_OK;
+}
+
+unsigned zs_format_bytes(zs_format fmt)
+{
+    switch (fmt) {
+    case ZS_FMT_RGB565_BE:
+    case ZS_FMT_RGB565:
+    case ZS_FMT_ID16:
+        return 2;
+    case ZS_FMT_RGB666:
+    case ZS_FMT_RGB888:
+        return 3;
+    case ZS_FMT_GRAY8:
+        return 1;
+    case ZS_FMT_COUNT:
+        break;
+    }
+    return 0;
+}
+
+zs_shade_params zs_shade_default(void)
+{
+    zs_shade_params p;
+    memset(&p, 0, sizeof p);
+    p.shading = ZS_SHADE_FLAT;
+    p.format = ZS_FMT_RGB565_BE;
+    p.background = 0;
+    p.ambient = ZS_FX_ONE;
+    return p;
+}
+
+zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mode)
+{
+    int32_t s, c;
+    int64_t cot;
+    if (!r || !cam)
+        return ZS_ERR_NULL;
+    if (r->state == ZS_STATE_NONE)
+        return ZS_ERR_STATE;
+    if (mode != ZS_MODE_SPAN && mode != ZS_MODE_ZLINE)
+        return ZS_ERR_MODE;
+    if (cam->has_view != 1 || cam->has_projection != 1)
+        return ZS_ERR_CAMERA;
+    if (cam->fov_deg <= 0 || cam->fov_deg >= ZS_FX(180))
+        return ZS_ERR_FOV;
+    if (cam->near_z <= 0 || cam->far_z <= cam->near_z)
+        return ZS_ERR_DEPTH_RANGE;
+    s = zs_sin_q30(cam->fov_deg / 2);
+    c = zs_sin_q30(cam->fov_deg / 2 + ZS_FX(90));
+    if (s <= 0)
+        return ZS_ERR_FOV;
+    cot = ((int64_t)c * 65536) / s;
+    if (cot > INT32_MAX / 2 || (cot * r->cfg.height) / r->cfg.width > INT32_MAX / 2)
+        return ZS_ERR_FOV;
+    r->cam = *cam;
+    r->mode = (uint8_t)mode;
+    r->proj_sy = (zs_fixed)cot;
+    r->proj_sx = (zs_fixed)((cot * r->cfg.height) / r->cfg.width);
+    memset(&r->stats, 0, sizeof r->stats);
+    r->shade = zs_shade_default();
+    r->bpp = (uint8_t)zs_format_bytes(r->shade.format);
+    r->n_verts = 0;
+    r->n_tris = 0;
+    r->tag_counter = 0;
+    r->next_row = 0;
+    memset(r->buckets, 0xFF, (size_t)r->cfg.height * 2u);
+    r->state = ZS_STATE_OPEN;
+    return ZS_OK;
+}
+
+zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
+{
+    int i;
+    if (!r || !p)
+        return ZS_ERR_NULL;
+    if (r->state != ZS_STATE_OPEN || r->tag_counter != 0)
+        return ZS_ERR_STATE;
+    if (p->shading != ZS_SHADE_FLAT && p->shading != ZS_SHADE_GOURAUD)
+        return ZS_ERR_MODE;
+    if ((unsigned)p->format >= (unsigned)ZS_FMT_COUNT)
+        return ZS_ERR_FORMAT;
+    if (p->light_count > ZS_MAX_LIGHTS || p->ambient < 0 ||
+        (p->fog.enabled && p->fog.end <= p->fog.start) || p->background > 0xFFFFFFu ||
+        p->fog.color > 0xFFFFFFu)
+        return ZS_ERR_ARGUMENT;
+    for (i = 0; i < p->light_count; i++) {
+        int64_t d[3];
+        int32_t u[3];
+        if (p->lights[i].intensity < 0)
+            return ZS_ERR_ARGUMENT;
+        d[0] = p->lights[i].direction.x;
+        d[1] = p->lights[i].direction.y;
+        d[2] = p->lights[i].direction.z;
+        if (!zs_normalize3(d, u))
+            return ZS_ERR_ARGUMENT;
+        r->light_dir[i] = zs_vec3_make(u[0], u[1], u[2]);
+    }
+    r->shade = *p;
+    r->bpp = (uint8_t)zs_format_bytes(p->format);
+    return ZS_OK;
+}
+
+zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t stride)
+{
+    int y;
+    if (!r || !buf)
+        return ZS_ERR_NULL;
+    if (r->state != ZS_STATE_OPEN && r->state != ZS_STATE_RENDERING)
+        return ZS_ERR_STATE;
+    if (rows < 1 || y0 < r->next_row || y0 >= (int)r->cfg.height ||
+        rows > (int)r->cfg.height - y0)
+        return ZS_ERR_ROW;
+    if (stride < (size_t)r->cfg.width * r->bpp)
+        return ZS_ERR_BUFFER;
+    if (r->state == ZS_STATE_OPEN) {
+        zs_raster_begin(r);
+        r->state = ZS_STATE_RENDERING;
+    }
+    for (y = r->next_row; y < y0; y++)
+        zs_raster_row(r, y, 0);
+    for (y = y0; y < y0 + rows; y++)
+        zs_raster_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
+    r->next_row = y0 + rows;
+    r->stats.rows += (uint32_t)rows;
+    if (r->next_row >= (int)r->cfg.height)
+        r->state = ZS_STATE_DONE;
+    return ZS_OK;
+}
+
+zs_status zs_render_frame(zs_renderer *r, void *buf, size_t stride, int band_rows,
+                          zs_band_fn fn, void *user)
+{
+    if (!r || !buf || !fn)
+        return ZS_ERR_NULL;
+    if (band_rows < 1)
+        return ZS_ERR_ROW;
+    if (r->state != ZS_STATE_OPEN && r->state != ZS_STATE_RENDERING)
+        return ZS_ERR_STATE;
+    while (r->next_row < (int)r->cfg.height) {
+        int y0 = r->next_row;
+        int n = (int)r->cfg.height - y0;
+        zs_status st;
+        if (n > band_rows)
+            n = band_rows;
+        st = zs_render_rows(r, y0, n, buf, stride);
+        if (st != ZS_OK)
+            return st;
+        if (fn(user, y0, n, buf, stride) != 0)
+            break;
+    }
+    return ZS_OK;
+}
+
+const zs_stats *zs_frame_stats(const zs_renderer *r)
+{
+    return r ? &r->stats : 0;
+}
+
+void zs_set_setup_hook(zs_renderer *r,
+                       void (*fn)(void *user, uint16_t tag, const int32_t xy[6],
+                                  const uint32_t z[3]),
+                       void *user)
+{
+    if (!r)
+        return;
+    r->setup_hook = fn;
+    r->setup_hook_user = user;
+}

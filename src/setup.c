@@ -1,0 +1,118 @@
+/* Projection, snapping and triangle setup: screen vertices in 28.4, window
+ * depth in Q2.30, back-face culling by the sign of the snapped area, and
+ * compact triangle records bucketed by their first row.
+ *
+ * Ranges: the guard band keeps |x|, |y| of every projected vertex below
+ * 2.5 * 2048 px = 2^17 in 28.4, so edge numerators stay below 2^37 and twice
+ * the area below 2^37 (see raster.c). */
+#include "zs_internal.h"
+
+/* Window depth z = far (w - near) / ((far - near) w), Q2.30, for near <= w <= far. */
+static uint32_t window_depth(const zs_renderer *r, int32_t w)
+{
+    int64_t n = r->cam.near_z, f = r->cam.far_z, q, z;
+    if (w <= n)
+        return 0;
+    q = (n * ((int64_t)1 << 30)) / w; /* near / w in Q30, <= 2^30 */
+    z = (((int64_t)1 << 30) - q) * f / (f - n);
+    if (z > ((int64_t)1 << 30))
+        z = (int64_t)1 << 30;
+    return (uint32_t)z;
+}
+
+void zs_project(const zs_renderer *r, int32_t xc, int32_t yc, int32_t w, int32_t *x,
+                int32_t *y, uint32_t *z)
+{
+    int64_t hw = 8 * (int64_t)r->cfg.width;  /* half the width in 1/16 px */
+    int64_t hh = 8 * (int64_t)r->cfg.height;
+    *x = (int32_t)(hw + zs_round_div64(hw * xc, w));
+    *y = (int32_t)(hh - zs_round_div64(hh * yc, w));
+    *z = window_depth(r, w);
+}
+
+uint16_t zs_project_vertex(zs_renderer *r, int32_t xc, int32_t yc, int32_t w, uint32_t shade)
+{
+    zs_vert *v;
+    if (r->n_verts >= r->cfg.max_vertices) {
+        r->stats.verts_dropped++;
+        return ZS_NONE;
+    }
+    v = &((zs_vert *)r->verts)[r->n_verts];
+    zs_project(r, xc, yc, w, &v->x, &v->y, &v->z);
+    v->shade = shade;
+    r->stats.verts_stored = ++r->n_verts;
+    return (uint16_t)(r->n_verts - 1u);
+}
+
+int64_t zs_area2(const zs_vert *a, const zs_vert *b, const zs_vert *c)
+{
+    return ((int64_t)b->x - a->x) * ((int64_t)c->y - a->y) -
+           ((int64_t)c->x - a->x) * ((int64_t)b->y - a->y);
+}
+
+static int32_t min3(int32_t a, int32_t b, int32_t c)
+{
+    int32_t m = a < b ? a : b;
+    return m < c ? m : c;
+}
+
+static int32_t max3(int32_t a, int32_t b, int32_t c)
+{
+    int32_t m = a > b ? a : b;
+    return m > c ? m : c;
+}
+
+int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, uint32_t color,
+                      uint16_t tag)
+{
+    const zs_vert *pool = (const zs_vert *)r->verts;
+    const zs_vert *a = &pool[i0], *b = &pool[i1], *c = &pool[i2];
+    int32_t xmin, xmax, ymin, ymax, row0, row1, col0, col1;
+    zs_tri *t;
+    uint16_t *bucket = (uint16_t *)r->buckets;
+    /* counter-clockwise seen from the camera is clockwise with y down */
+    if (zs_area2(a, b, c) >= 0)
+        return ZS_SETUP_CULLED;
+    xmin = min3(a->x, b->x, c->x);
+    xmax = max3(a->x, b->x, c->x);
+    ymin = min3(a->y, b->y, c->y);
+    ymax = max3(a->y, b->y, c->y);
+    if (xmax <= 0 || ymax <= 0 || xmin >= 16 * (int32_t)r->cfg.width ||
+        ymin >= 16 * (int32_t)r->cfg.height)
+        return ZS_SETUP_REJECTED;
+    /* pixel centres covered by the bounding box, within the screen */
+    row0 = zs_clampi(zs_first_row(ymin), 0, r->cfg.height);
+    row1 = zs_clampi(zs_first_row(ymax), 0, r->cfg.height);
+    col0 = zs_clampi(zs_first_row(xmin), 0, r->cfg.width);
+    col1 = zs_clampi(zs_first_row(xmax), 0, r->cfg.width);
+    if (row0 >= row1 || col0 >= col1)
+        return ZS_SETUP_EMPTY;
+    if (r->n_tris >= r->cfg.max_triangles)
+        return ZS_SETUP_DROPPED; /* capacity policy: the last triangles are dropped */
+    t = &((zs_tri *)r->tris)[r->n_tris];
+    t->v[0] = i0;
+    t->v[1] = i1;
+    t->v[2] = i2;
+    t->color = color;
+    t->tag = tag;
+    t->pad = 0;
+    t->next = bucket[row0];
+    bucket[row0] = r->n_tris;
+    r->n_tris++;
+    r->stats.records++;
+    if (r->setup_hook) {
+        int32_t xy[6];
+        uint32_t z[3];
+        xy[0] = a->x;
+        xy[1] = a->y;
+        xy[2] = b->x;
+        xy[3] = b->y;
+        xy[4] = c->x;
+        xy[5] = c->y;
+        z[0] = a->z;
+        z[1] = b->z;
+        z[2] = c->z;
+        r->setup_hook(r->setup_hook_user, tag, xy, z);
+    }
+    return ZS_SETUP_STORED;
+}

@@ -1,0 +1,149 @@
+/* Internal records and helpers shared by the pipeline stages. */
+#ifndef ZSPAN_INTERNAL_H
+#define ZSPAN_INTERNAL_H
+
+#include "zspan/zspan.h"
+#include <string.h>
+
+#define ZS_NONE 0xFFFFu
+
+/* Renderer states. */
+enum { ZS_STATE_NONE = 0, ZS_STATE_READY, ZS_STATE_OPEN, ZS_STATE_RENDERING, ZS_STATE_DONE };
+
+/* Guard band: x and y are clipped only beyond +-ZS_GUARD * w (NDC units), so
+ * projected coordinates stay within [-1.5, 2.5] * screen size and all edge and
+ * plane arithmetic fits its integer types (see setup.c). */
+#define ZS_GUARD 4
+
+/* A screen-space vertex of the frame (16 bytes). */
+typedef struct zs_vert {
+    int32_t x, y;    /* 28.4 pixels, y down */
+    uint32_t z;      /* window depth Q2.30; ZS_VERT_UNPROJECTED if outside */
+    uint32_t shade;  /* bits 0..23 RGB888 (colour or light), 24..31 fog 0..255 */
+} zs_vert;
+#define ZS_VERT_UNPROJECTED 0x80000000u
+
+/* A stored triangle (16 bytes); v[] index the vertex pool. */
+typedef struct zs_tri {
+    uint16_t v[3];
+    uint16_t next;   /* next record in the same first-row bucket */
+    uint32_t color;  /* bits 0..23 face RGB888, 24..31 ZS_TRI_* flags */
+    uint16_t tag;
+    uint16_t pad;
+} zs_tri;
+#define ZS_TRI_MODULATE 0x01u  /* colour_i = face * vertex rgb_i / 255 */
+#define ZS_TRI_FOG 0x02u       /* blend toward the fog colour by vertex fog */
+
+/* An edge stepped down the rows (28 bytes). Column = ceil(x - 0.5) exactly:
+ * x is the integer column, err the remainder of the exact rational. */
+typedef struct zs_edge {
+    int32_t x;       /* first covered column at/after this edge, this row */
+    int32_t err;     /* x * den - numerator, in [0, den) */
+    int32_t step;    /* whole columns per row (floor) */
+    int32_t rstep;   /* remainder per row, in [0, den) */
+    int32_t den;     /* 16 * dy (1/16 px units) */
+    int16_t y_end;   /* first row this edge no longer covers */
+    uint16_t owner;  /* active triangle */
+    uint8_t trailing;/* 1: right edge (span end), 0: left edge (span start) */
+    uint8_t upper;   /* 1: the upper short edge, continued by the lower one */
+    uint16_t pad;
+} zs_edge;
+
+/* An active triangle: its planes, valid while it crosses the current row. */
+typedef struct zs_active {
+    int64_t zrow;          /* depth at column 0 of the current row (Q46) */
+    int64_t zdx, zdy;      /* depth per column and per row (Q46) */
+    int64_t zcur;          /* scratch: depth at the current span start */
+    uint32_t crow[3];      /* colour at column 0 of this row (Q8.16, wrapping) */
+    int32_t cdx[3], cdy[3];/* colour per column and per row (Q8.16) */
+    uint32_t pixel;        /* packed pixel of a flat triangle */
+    uint16_t tri;          /* record index: the submission order for ties */
+    uint16_t left, right;  /* its two edges */
+    uint8_t gouraud;       /* colour varies across the triangle */
+    int8_t inside;         /* in/out counter while walking a row */
+    uint16_t set_pos;      /* position in the in-polygon set */
+    int16_t y_end;         /* first row below the triangle */
+} zs_active;
+
+/* Compile-time checks that the header's sizes match the records. */
+typedef char zs_check_vert[(sizeof(zs_vert) == ZS_VERTEX_BYTES) ? 1 : -1];
+typedef char zs_check_tri[(sizeof(zs_tri) == ZS_TRIANGLE_BYTES) ? 1 : -1];
+typedef char zs_check_edge[(sizeof(zs_edge) == ZS_EDGE_BYTES) ? 1 : -1];
+typedef char zs_check_active[(sizeof(zs_active) == ZS_ACTIVE_BYTES) ? 1 : -1];
+
+/* ---- integer helpers (fixed.c) ---- */
+int64_t zs_floor_div64(int64_t a, int64_t b);       /* b > 0 */
+int64_t zs_round_div64(int64_t a, int64_t b);       /* b > 0, half up */
+int32_t zs_sat32(int64_t v, uint32_t *saturated);   /* clamp to int32, count */
+int32_t zs_sin_q30(zs_fixed deg);                   /* sine, Q2.30 */
+/* round(sum a[i] * b[i] / 65536) without overflow for any int32 inputs. */
+int64_t zs_dot3_q16(const int32_t a[3], const int32_t b[3]);
+/* Shrink a vector by powers of two until every |component| < limit. */
+void zs_shrink3(int64_t v[3], int64_t limit);
+/* Unit vector (Q16.16) in the direction of v; 0 if v is zero. */
+int zs_normalize3(const int64_t v[3], int32_t out[3]);
+
+/* ---- pipeline stages ---- */
+/* geometry.c: transform, light, cull, clip, hand triangles to setup */
+/* setup.c */
+typedef struct zs_svert {        /* a vertex on its way to setup */
+    int32_t xc, yc, w;           /* clip space, Q16.16 */
+    uint32_t shade;
+    uint16_t pool;               /* pool index when already projected, else ZS_NONE */
+} zs_svert;
+enum { ZS_SETUP_STORED, ZS_SETUP_CULLED, ZS_SETUP_EMPTY, ZS_SETUP_REJECTED, ZS_SETUP_DROPPED };
+/* Projects a clip-space vertex into the pool; returns its index or ZS_NONE. */
+uint16_t zs_project_vertex(zs_renderer *r, int32_t xc, int32_t yc, int32_t w, uint32_t shade);
+/* Projected vertex data without storing it (same arithmetic as above). */
+void zs_project(const zs_renderer *r, int32_t xc, int32_t yc, int32_t w, int32_t *x,
+                int32_t *y, uint32_t *z);
+/* Twice the signed screen area (1/256 px^2); < 0 for a front face. */
+int64_t zs_area2(const zs_vert *a, const zs_vert *b, const zs_vert *c);
+/* First row whose pixel centre is at or below y (28.4): ceil(y/16 - 0.5). */
+static inline int32_t zs_first_row(int32_t y)
+{
+    return (int32_t)zs_floor_div64((int64_t)y + 7, 16);
+}
+/* Culls, bounds and stores one screen triangle; returns ZS_SETUP_*. */
+int zs_setup_triangle(zs_renderer *r, uint16_t v0, uint16_t v1, uint16_t v2, uint32_t color,
+                      uint16_t tag);
+/* clip.c: clips polygon in[n] against the near/far planes and the guard band;
+ * returns the vertex count of out (0..9). out must hold 9. */
+int zs_clip_polygon(const zs_renderer *r, const zs_svert *in, int n, zs_svert *out);
+/* Outcodes of a clip-space vertex. */
+#define ZS_OUT_NEAR 0x01u
+#define ZS_OUT_FAR 0x02u
+#define ZS_OUT_GUARD 0x04u    /* beyond the guard band in x or y */
+#define ZS_OUT_LEFT 0x10u     /* outside the view frustum (not the guard band) */
+#define ZS_OUT_RIGHT 0x20u
+#define ZS_OUT_BOTTOM 0x40u
+#define ZS_OUT_TOP 0x80u
+unsigned zs_outcode(const zs_renderer *r, int32_t xc, int32_t yc, int32_t w);
+
+/* activate.c: edges and planes of a triangle reaching its first row */
+/* Returns the active triangle's index, or ZS_NONE when the pools are full. */
+uint16_t zs_activate(zs_renderer *r, uint16_t tri, int32_t y);
+void zs_edge_continue(zs_renderer *r, zs_edge *e, int32_t y);
+/* raster.c: rows, edges, the active edge list */
+void zs_raster_begin(zs_renderer *r);
+void zs_raster_row(zs_renderer *r, int y, uint8_t *row); /* row NULL: step only */
+
+/* shade.c: pixel packing and span fills */
+void zs_pack_pixel(zs_format fmt, uint32_t rgb, uint8_t out[4]);
+void zs_fill_flat(uint8_t *row, int x0, int x1, unsigned bpp, uint32_t pixel);
+void zs_fill_gouraud(const zs_renderer *r, const zs_active *a, uint8_t *row, int x0, int x1);
+/* Sets the colour planes and flat pixel of an active triangle. */
+void zs_shade_setup(const zs_renderer *r, zs_active *a, const zs_tri *t, const zs_vert *v[3],
+                    int32_t ox, int32_t oy, int64_t area2, int32_t y);
+uint32_t zs_light_color(uint32_t rgb, zs_fixed intensity);
+
+/* span.c / zline.c: one row's visibility */
+void zs_span_row(zs_renderer *r, int y, uint8_t *row);
+void zs_zline_row(zs_renderer *r, int y, uint8_t *row);
+
+static inline int32_t zs_clampi(int32_t v, int32_t lo, int32_t hi)
+{
+    return v < lo ? lo : (v > hi ? hi : v);
+}
+
+#endif

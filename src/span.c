@@ -1,121 +1,212 @@
 /* Span visibility for one row: walk the x-sorted active edge list, keep the
- * set of triangles the walk is inside, and make one depth decision per span.
- * Two depth planes differ linearly in x along a row, so where a triangle
- * penetrates the one in front, the crossing column is found with one division
- * and the span is split there. Decisions are exact at pixel centres, with
- * ties going to the earlier record, so the result equals the z-buffer mode
- * pixel for pixel. */
+ * set of triangles the walk is inside and the nearest of them (the top).
+ *
+ * Decisions are exact at pixel centres: at every column the top is the
+ * minimum of (depth, record index) over the set, the same rule the z-buffer
+ * mode applies per pixel, so the two modes give identical images.
+ *
+ * Work stays small because a decision is only made when something changes:
+ *  - a triangle entering is compared with the top once, at its first column;
+ *  - when the top leaves, the nearest of the rest is picked;
+ *  - two depth planes differ linearly along a row, so for each other member
+ *    the first column where it would overtake the top (a penetration) is
+ *    computed once, and only when it lies before either of the two ends
+ *    (one multiplication; a division only for a real crossing). The nearest
+ *    such column splits the span. */
 #include "zs_internal.h"
+
+#define NO_CROSS INT32_MAX
+
+typedef struct row_ctx {
+    zs_renderer *r;
+    zs_active *act;
+    const zs_edge *edges;
+    uint16_t *set;
+    uint8_t *row;
+    zs_active *top;       /* nearest member, or NULL when the set is empty */
+    int32_t width;
+    int32_t min_cross;    /* first column where a member overtakes the top */
+    uint32_t background;  /* packed background pixel */
+    uint32_t evals;
+} row_ctx;
 
 static int64_t depth_at(const zs_active *a, int32_t x)
 {
     return a->zrow + a->zdx * x;
 }
 
-static void fill_span(zs_renderer *r, uint8_t *row, const zs_active *a, int32_t x0, int32_t x1,
-                      uint32_t background)
+/* Does (za, a) win over (zb, b)? Nearer first, then the earlier record. */
+static int nearer(int64_t za, const zs_active *a, int64_t zb, const zs_active *b)
 {
-    if (!a)
-        zs_fill_flat(row, x0, x1, r->bpp, background);
-    else if (a->gouraud)
-        zs_fill_gouraud(r, a, row, x0, x1);
-    else
-        zs_fill_flat(row, x0, x1, r->bpp, a->pixel);
-    r->stats.spans++;
+    return za < zb || (za == zb && a->tri < b->tri);
 }
 
-/* Columns [x0, x1) with the in-polygon set fixed: split at crossings. */
-static void resolve(zs_renderer *r, uint8_t *row, int32_t x0, int32_t x1, uint32_t background)
+static int32_t right_column(const row_ctx *c, const zs_active *a)
 {
-    zs_active *act = (zs_active *)r->active;
-    const uint16_t *set = (const uint16_t *)r->in_set;
-    int ns = r->n_set;
-    int32_t x = x0;
-    if (ns == 0) {
-        fill_span(r, row, 0, x0, x1, background);
+    return zs_clampi(c->edges[a->right].x, 0, c->width);
+}
+
+/* First column after x where j overtakes top, or NO_CROSS when that does not
+ * happen before one of the two triangles ends on this row. zj, zt: depths
+ * at x, where top wins. */
+static int32_t overtake(const row_ctx *c, const zs_active *j, const zs_active *top, int32_t x,
+                        int64_t zj, int64_t zt)
+{
+    int64_t slope = top->zdx - j->zdx, gap = zj - zt, reach, k;
+    int32_t lim;
+    int j_wins_tie = j->tri < top->tri;
+    if (slope <= 0)
+        return NO_CROSS; /* j never gets nearer along this row */
+    lim = right_column(c, top);
+    {
+        int32_t lj = right_column(c, j);
+        if (lj < lim)
+            lim = lj;
+    }
+    if (lim - x <= 1)
+        return NO_CROSS;
+    reach = slope * (lim - x - 1); /* how much the gap closes by the last shared column */
+    if (reach < gap || (reach == gap && !j_wins_tie))
+        return NO_CROSS;
+    k = j_wins_tie ? (gap + slope - 1) / slope : gap / slope + 1;
+    return x + (int32_t)k;
+}
+
+/* Picks the top among the whole set at column x and the next crossing. */
+static void retop(row_ctx *c, int32_t x)
+{
+    int ns = c->r->n_set, k;
+    zs_active *best = 0;
+    int64_t bz = 0;
+    for (k = 0; k < ns; k++) {
+        zs_active *a = &c->act[c->set[k]];
+        a->zcur = depth_at(a, x);
+        if (!best || nearer(a->zcur, a, bz, best)) {
+            best = a;
+            bz = a->zcur;
+        }
+    }
+    c->evals += (uint32_t)ns;
+    c->top = best;
+    c->min_cross = NO_CROSS;
+    for (k = 0; k < ns; k++) {
+        zs_active *a = &c->act[c->set[k]];
+        if (a == best)
+            continue;
+        a->cross = overtake(c, a, best, x, a->zcur, bz);
+        if (a->cross < c->min_cross)
+            c->min_cross = a->cross;
+    }
+}
+
+static void fill(row_ctx *c, int32_t x0, int32_t x1)
+{
+    const zs_active *a = c->top;
+    if (!a)
+        zs_fill_flat(c->row, x0, x1, c->r->bpp, c->background);
+    else if (a->gouraud)
+        zs_fill_gouraud(c->r, a, c->row, x0, x1);
+    else
+        zs_fill_flat(c->row, x0, x1, c->r->bpp, a->pixel);
+    c->r->stats.spans++;
+}
+
+/* Columns [x0, x1) with the set unchanged: split where the top is overtaken. */
+static void emit(row_ctx *c, int32_t x0, int32_t x1)
+{
+    while (c->top && c->min_cross < x1) {
+        int32_t xc = c->min_cross;
+        fill(c, x0, xc);
+        c->r->stats.crossings++;
+        x0 = xc;
+        retop(c, xc);
+    }
+    fill(c, x0, x1);
+}
+
+static void enter(row_ctx *c, zs_active *a, uint16_t ai, int32_t x)
+{
+    int64_t za, zt;
+    a->set_pos = c->r->n_set;
+    c->set[c->r->n_set++] = ai;
+    a->cross = NO_CROSS;
+    if (!c->top) {
+        c->top = a;
+        c->min_cross = NO_CROSS;
         return;
     }
-    if (ns == 1) {
-        fill_span(r, row, &act[set[0]], x0, x1, background);
+    za = depth_at(a, x);
+    zt = depth_at(c->top, x);
+    c->evals += 2;
+    if (nearer(za, a, zt, c->top)) {
+        retop(c, x); /* a is the new top; every member's crossing changes */
         return;
     }
-    for (;;) {
-        zs_active *best = &act[set[0]];
-        int64_t bz = depth_at(best, x);
-        int32_t end = x1;
+    a->cross = overtake(c, a, c->top, x, za, zt);
+    if (a->cross < c->min_cross)
+        c->min_cross = a->cross;
+}
+
+static void leave(row_ctx *c, zs_active *a, int32_t x)
+{
+    uint16_t last = c->set[--c->r->n_set];
+    c->set[a->set_pos] = last;
+    c->act[last].set_pos = a->set_pos;
+    if (a == c->top) {
+        c->top = 0;
+        c->min_cross = NO_CROSS;
+        if (c->r->n_set > 0)
+            retop(c, x);
+    } else if (a->cross == c->min_cross && a->cross != NO_CROSS) {
         int k;
-        best->zcur = bz;
-        for (k = 1; k < ns; k++) {
-            zs_active *a = &act[set[k]];
-            int64_t z = depth_at(a, x);
-            a->zcur = z;
-            if (z < bz || (z == bz && a->tri < best->tri)) {
-                best = a;
-                bz = z;
-            }
+        c->min_cross = NO_CROSS;
+        for (k = 0; k < c->r->n_set; k++) {
+            const zs_active *m = &c->act[c->set[k]];
+            if (m != c->top && m->cross < c->min_cross)
+                c->min_cross = m->cross;
         }
-        r->stats.depth_evals += (uint32_t)ns;
-        /* the first column where another plane overtakes the winner */
-        for (k = 0; k < ns; k++) {
-            const zs_active *a = &act[set[k]];
-            int64_t slope = best->zdx - a->zdx, gap, steps;
-            if (a == best || slope <= 0)
-                continue; /* never gets nearer along this row */
-            gap = a->zcur - bz; /* >= 0 */
-            if (a->tri < best->tri)
-                steps = (gap + slope - 1) / slope; /* wins the tie at equality */
-            else
-                steps = gap / slope + 1;
-            if (steps < (int64_t)end - x)
-                end = x + (int32_t)steps;
-        }
-        fill_span(r, row, best, x, end, background);
-        if (end >= x1)
-            return;
-        r->stats.crossings++;
-        x = end;
     }
 }
 
 void zs_span_row(zs_renderer *r, int y, uint8_t *row)
 {
-    const zs_edge *edges = (const zs_edge *)r->edges;
     const uint16_t *ael = (const uint16_t *)r->ael;
-    zs_active *act = (zs_active *)r->active;
-    uint16_t *set = (uint16_t *)r->in_set;
-    int32_t w = r->cfg.width, cur = 0;
-    int i = 0, n = r->n_ael;
+    row_ctx c;
+    int32_t cur = 0;
+    int i, n = r->n_ael;
     uint8_t bgpx[4];
-    uint32_t background;
     (void)y;
+    c.r = r;
+    c.act = (zs_active *)r->active;
+    c.edges = (const zs_edge *)r->edges;
+    c.set = (uint16_t *)r->in_set;
+    c.row = row;
+    c.top = 0;
+    c.width = r->cfg.width;
+    c.min_cross = NO_CROSS;
+    c.evals = 0;
     zs_pack_pixel(r->shade.format, r->shade.format == ZS_FMT_ID16 ? 0 : r->shade.background,
                   bgpx);
-    memcpy(&background, bgpx, 4);
+    memcpy(&c.background, bgpx, 4);
     r->n_set = 0;
-    for (;;) {
-        int32_t ex = i < n ? zs_clampi(edges[ael[i]].x, 0, w) : w;
-        if (ex > cur) {
-            resolve(r, row, cur, ex, background);
-            cur = ex;
+    for (i = 0; i < n; i++) {
+        const zs_edge *e = &c.edges[ael[i]];
+        zs_active *a = &c.act[e->owner];
+        int32_t x = zs_clampi(e->x, 0, c.width);
+        if (x > cur) { /* all events at a column are applied before its span */
+            emit(&c, cur, x);
+            cur = x;
         }
-        if (i >= n)
-            break;
-        /* every event at this column before the next span */
-        while (i < n && zs_clampi(edges[ael[i]].x, 0, w) == ex) {
-            const zs_edge *e = &edges[ael[i]];
-            zs_active *a = &act[e->owner];
-            if (!e->trailing) {
-                if (++a->inside == 1) {
-                    a->set_pos = r->n_set;
-                    set[r->n_set++] = e->owner;
-                }
-            } else if (a->inside-- == 1) { /* left the triangle */
-                uint16_t last = set[--r->n_set];
-                set[a->set_pos] = last;
-                act[last].set_pos = a->set_pos;
-            }
-            i++;
+        /* in/out counter: a span inverted by rounding is never entered */
+        if (!e->trailing) {
+            if (++a->inside == 1)
+                enter(&c, a, e->owner, x);
+        } else if (a->inside-- == 1) {
+            leave(&c, a, x);
         }
     }
-    r->stats.pixels_shaded += (uint32_t)w;
+    if (cur < c.width)
+        emit(&c, cur, c.width);
+    r->stats.depth_evals += c.evals;
+    r->stats.pixels_shaded += (uint32_t)c.width;
 }

@@ -63,6 +63,7 @@ typedef struct zs_active {
     int8_t inside;         /* in/out counter while walking a row */
     uint16_t set_pos;      /* position in the in-polygon set */
     int16_t y_end;         /* first row below the triangle */
+    int32_t cross;         /* span walk: column where it overtakes the top */
 } zs_active;
 
 /* Compile-time checks that the header's sizes match the records. */

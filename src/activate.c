@@ -10,17 +10,36 @@
 /* Sets e to cover the edge a -> b (a above b) starting at row y. */
 static void edge_init(zs_edge *e, const zs_vert *a, const zs_vert *b, int32_t y)
 {
-    int64_t dx = (int64_t)b->x - a->x, dy = (int64_t)b->y - a->y;
-    int64_t den = 16 * dy;
-    /* numerator of (x(yc) - 0.5) * den, at yc = 16 y + 8 */
-    int64_t num = ((int64_t)a->x - 8) * dy + (16 * (int64_t)y + 8 - a->y) * dx;
-    int64_t x = -zs_floor_div64(-num, den); /* ceil */
-    int64_t step = zs_floor_div64(16 * dx, den);
-    e->x = (int32_t)x;
-    e->err = (int32_t)(x * den - num);
-    e->step = (int32_t)step;
-    e->rstep = (int32_t)(16 * dx - step * den);
-    e->den = (int32_t)den;
+    int32_t dx = b->x - a->x, dy = b->y - a->y; /* |dx|, |dy| < 2^19 */
+    int32_t den = 16 * dy;
+    /* (x(yc) - 0.5) * den at yc = 16 y + 8, split as 16 * q0 * dy + m so the
+     * part left to divide is small: q0 = floor((x_a - 8) / 16). */
+    int32_t q0 = zs_asr32(a->x - 8, 4), r0 = a->x - 8 - 16 * q0;
+    int32_t t = 16 * y + 8 - a->y; /* in [0, 16) on the edge's first row */
+    int32_t x, err, step;
+    if (t < 16) {
+        int32_t m = r0 * dy + t * dx; /* |m| < 2^24 */
+        int32_t q = m / den;
+        if (m - q * den > 0)
+            q++; /* ceil */
+        x = q0 + q;
+        err = q * den - m;
+    } else { /* starts above the screen: the numerator needs 64 bits */
+        int64_t m = (int64_t)r0 * dy + (int64_t)t * dx;
+        int64_t q = m / den;
+        if (m - q * den > 0)
+            q++;
+        x = q0 + (int32_t)q;
+        err = (int32_t)(q * den - m);
+    }
+    step = (16 * dx) / den;
+    if (step * den > 16 * dx)
+        step--; /* floor */
+    e->x = x;
+    e->err = err;
+    e->step = step;
+    e->rstep = 16 * dx - step * den;
+    e->den = den;
     e->y_end = (int16_t)zs_first_row(b->y);
 }
 
@@ -49,13 +68,13 @@ static void depth_plane(zs_active *a, const zs_vert *v[3], int64_t area2, int32_
     a->zdy = plane_gradient(dz2 * dx1 - dz1 * dx2, area2, limit);
     /* depth at the origin pixel centre, from vertex 0 (less than a pixel away) */
     z0 = (int64_t)v[0]->z * 65536 +
-         zs_floor_div64(a->zdx * (16 * (int64_t)ox + 8 - v[0]->x) +
-                            a->zdy * (16 * (int64_t)oy + 8 - v[0]->y),
-                        16);
+         zs_asr64(a->zdx * (16 * (int64_t)ox + 8 - v[0]->x) +
+                      a->zdy * (16 * (int64_t)oy + 8 - v[0]->y),
+                  4);
     a->zrow = z0 + a->zdy * ((int64_t)y - oy) - a->zdx * ox;
 }
 
-uint16_t zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
+uint16_t zs_activate(zs_renderer *r, uint16_t ti, int32_t y, uint16_t *left)
 {
     zs_tri *t = &((zs_tri *)r->tris)[ti];
     const zs_vert *pool = (const zs_vert *)r->verts;
@@ -106,7 +125,6 @@ uint16_t zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     /* mid to the right of the long edge: the long edge leads (left) */
     elong->trailing = cross > 0 ? 0 : 1;
     eshort->trailing = (uint8_t)!elong->trailing;
-    a->left = elong->trailing ? es : el;
     a->right = elong->trailing ? el : es;
     a->tri = ti;
     a->inside = 0;
@@ -114,11 +132,12 @@ uint16_t zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     a->y_end = elong->y_end;
 
     area2 = zs_area2(v[0], v[1], v[2]);
-    ox = (int32_t)zs_floor_div64(v[0]->x, 16);
-    oy = (int32_t)zs_floor_div64(v[0]->y, 16);
+    ox = zs_asr32(v[0]->x, 4);
+    oy = zs_asr32(v[0]->y, 4);
     depth_plane(a, v, area2, ox, oy, y);
     zs_shade_setup(r, a, t, v, ox, oy, area2, y);
     r->stats.tris_drawn++;
+    *left = elong->trailing ? es : el;
     return ai;
 }
 

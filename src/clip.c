@@ -40,7 +40,7 @@ static int64_t plane_dist(const zs_renderer *r, int p, const zs_svert *v)
 static int32_t lerp32(int32_t a, int32_t b, int64_t t_q28)
 {
     int64_t d = (int64_t)b - a;
-    return (int32_t)(a + zs_floor_div64(d * t_q28 + ((int64_t)1 << 27), (int64_t)1 << 28));
+    return (int32_t)(a + zs_asr64(d * t_q28 + ((int64_t)1 << 27), 28));
 }
 
 static uint32_t lerp_shade(uint32_t a, uint32_t b, int64_t t_q28)

@@ -48,7 +48,7 @@ zs_vec3 zs_vec3_make(zs_fixed x, zs_fixed y, zs_fixed z)
 zs_fixed zs_fx_mul(zs_fixed a, zs_fixed b)
 {
     int64_t p = (int64_t)a * b;
-    return zs_sat32(zs_floor_div64(p + 32768, 65536), 0);
+    return zs_sat32(zs_asr64(p + 32768, 16), 0);
 }
 
 zs_fixed zs_fx_div(zs_fixed a, zs_fixed b)
@@ -79,7 +79,7 @@ uint32_t zs_isqrt64(uint64_t v)
 /* a * b in Q30, rounded half up; |a|, |b| <= 2^31. */
 static int64_t mul_q30(int64_t a, int64_t b)
 {
-    return zs_floor_div64(a * b + ((int64_t)1 << 29), (int64_t)1 << 30);
+    return zs_asr64(a * b + ((int64_t)1 << 29), 30);
 }
 
 /* sin x and cos x for 0 <= x <= pi/4 (x in Q30), by their Taylor series. */
@@ -128,11 +128,10 @@ int32_t zs_sin_q30(zs_fixed deg)
         a = full / 2 - a;
     /* now 0 <= a <= 90 degrees */
     if (a <= quarter / 2) {
-        x = zs_floor_div64(a * rad_per_deg_q40 + ((int64_t)1 << 25), (int64_t)1 << 26);
+        x = zs_asr64(a * rad_per_deg_q40 + ((int64_t)1 << 25), 26);
         s = sin_small(x);
     } else {
-        x = zs_floor_div64((quarter - a) * rad_per_deg_q40 + ((int64_t)1 << 25),
-                           (int64_t)1 << 26);
+        x = zs_asr64((quarter - a) * rad_per_deg_q40 + ((int64_t)1 << 25), 26);
         s = cos_small(x);
     }
     if (s > ((int64_t)1 << 30))
@@ -144,14 +143,14 @@ int32_t zs_sin_q30(zs_fixed deg)
 
 zs_fixed zs_fx_sin_deg(zs_fixed deg)
 {
-    return (zs_fixed)zs_floor_div64((int64_t)zs_sin_q30(deg) + 8192, 16384);
+    return (zs_fixed)zs_asr64((int64_t)zs_sin_q30(deg) + 8192, 14);
 }
 
 zs_fixed zs_fx_cos_deg(zs_fixed deg)
 {
     /* cos(a) = sin(a + 90); reduce first so the addition cannot overflow */
     int64_t a = (int64_t)deg % ((int64_t)360 * 65536) + (int64_t)90 * 65536;
-    return (zs_fixed)zs_floor_div64((int64_t)zs_sin_q30((zs_fixed)a) + 8192, 16384);
+    return (zs_fixed)zs_asr64((int64_t)zs_sin_q30((zs_fixed)a) + 8192, 14);
 }
 
 static int64_t abs64(int64_t v)
@@ -205,11 +204,11 @@ int64_t zs_dot3_q16(const int32_t a[3], const int32_t b[3])
     int i;
     for (i = 0; i < 3; i++) {
         int64_t p = (int64_t)a[i] * b[i];
-        int64_t q = zs_floor_div64(p, 65536);
+        int64_t q = zs_asr64(p, 16);
         hi += q;
         lo += p - q * 65536;
     }
-    return hi + zs_floor_div64(lo + 32768, 65536);
+    return hi + zs_asr64(lo + 32768, 16);
 }
 
 zs_mat34 zs_mat34_identity(void)

@@ -30,10 +30,8 @@ static void to_clip(const draw_ctx *c, uint32_t i, int32_t *xc, int32_t *yc, int
         p[k] = zs_sat32((int64_t)pos[k] * c->mesh->scale, &r->stats.saturated);
     for (k = 0; k < 3; k++)
         e[k] = zs_sat32(zs_dot3_q16(c->mv.m[k], p) + c->mv.m[k][3], &r->stats.saturated);
-    *xc = zs_sat32(zs_floor_div64((int64_t)e[0] * r->proj_sx + 32768, 65536),
-                   &r->stats.saturated);
-    *yc = zs_sat32(zs_floor_div64((int64_t)e[1] * r->proj_sy + 32768, 65536),
-                   &r->stats.saturated);
+    *xc = zs_sat32(zs_asr64((int64_t)e[0] * r->proj_sx + 32768, 16), &r->stats.saturated);
+    *yc = zs_sat32(zs_asr64((int64_t)e[1] * r->proj_sy + 32768, 16), &r->stats.saturated);
     *w = -e[2];
 }
 
@@ -63,7 +61,7 @@ static zs_fixed light_intensity(const draw_ctx *c, const int64_t n_model[3])
             l[2] = r->light_dir[k].z;
             d = zs_dot3_q16(unit, l);
             if (d > 0)
-                total += zs_floor_div64(d * r->shade.lights[k].intensity, 65536);
+                total += zs_asr64(d * r->shade.lights[k].intensity, 16);
         }
     }
     if (total > ((int64_t)16 << 16))

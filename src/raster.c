@@ -28,10 +28,10 @@ static void add_new_edges(zs_renderer *r, int32_t y)
     uint16_t old_n = r->n_ael, n = old_n, ti;
     int i, j, k;
     for (ti = bucket[y]; ti != ZS_NONE; ti = tris[ti].next) {
-        uint16_t ai = zs_activate(r, ti, y);
+        uint16_t left, ai = zs_activate(r, ti, y, &left);
         if (ai == ZS_NONE)
             continue;
-        ael[n++] = ((const zs_active *)r->active)[ai].left;
+        ael[n++] = left;
         ael[n++] = ((const zs_active *)r->active)[ai].right;
     }
     if (n == old_n)
@@ -64,7 +64,9 @@ static void add_new_edges(zs_renderer *r, int32_t y)
     r->n_ael = n;
 }
 
-/* Steps every edge to row y + 1, retires finished ones, re-sorts. */
+/* Steps every edge to row y + 1, retires finished ones and keeps the list
+ * sorted (an edge that passed its left neighbour is moved back: rare). The
+ * planes of each triangle step with its left edge. */
 static void step_edges(zs_renderer *r, int32_t y)
 {
     uint16_t *ael = (uint16_t *)r->ael;
@@ -72,50 +74,48 @@ static void step_edges(zs_renderer *r, int32_t y)
     zs_active *act = (zs_active *)r->active;
     uint16_t *efree = (uint16_t *)r->edge_free;
     uint16_t *afree = (uint16_t *)r->active_free;
-    int i, j, n = r->n_ael, kept = 0;
-    int32_t next = y + 1;
+    int i, n = r->n_ael, kept = 0;
+    int32_t next = y + 1, prev_x = INT32_MIN;
     for (i = 0; i < n; i++) {
         uint16_t ei = ael[i];
         zs_edge *e = &edges[ei];
+        zs_active *a = &act[e->owner];
         if (next >= e->y_end) {
-            zs_active *a = &act[e->owner];
-            if (e->upper && next < a->y_end) {
-                zs_edge_continue(r, e, next);
-                ael[kept++] = ei;
+            if (!e->upper || next >= a->y_end) {
+                efree[r->n_edge_free++] = ei;
+                if (!e->trailing) /* free the triangle once, with its left edge */
+                    afree[r->n_active_free++] = e->owner;
                 continue;
             }
-            efree[r->n_edge_free++] = ei;
-            if (ei == a->left) /* both edges end on the same row: free once */
-                afree[r->n_active_free++] = e->owner;
-            continue;
+            zs_edge_continue(r, e, next);
+        } else {
+            e->x += e->step;
+            e->err -= e->rstep;
+            if (e->err < 0) {
+                e->err += e->den;
+                e->x++;
+            }
         }
-        e->x += e->step;
-        e->err -= e->rstep;
-        if (e->err < 0) {
-            e->err += e->den;
-            e->x++;
+        if (!e->trailing) {
+            a->zrow += a->zdy;
+            if (a->gouraud) {
+                a->crow[0] += (uint32_t)a->cdy[0];
+                a->crow[1] += (uint32_t)a->cdy[1];
+                a->crow[2] += (uint32_t)a->cdy[2];
+            }
         }
-        ael[kept++] = ei;
-    }
-    /* insertion sort: after one step only a few edges are out of order */
-    for (i = 1; i < kept; i++) {
-        uint16_t e = ael[i];
-        int32_t x = edges[e].x;
-        for (j = i; j > 0 && edges[ael[j - 1]].x > x; j--)
-            ael[j] = ael[j - 1];
-        ael[j] = e;
+        if (e->x >= prev_x) {
+            prev_x = e->x;
+            ael[kept++] = ei;
+        } else {
+            int j = kept;
+            for (; j > 0 && edges[ael[j - 1]].x > e->x; j--)
+                ael[j] = ael[j - 1];
+            ael[j] = ei;
+            kept++;
+        }
     }
     r->n_ael = (uint16_t)kept;
-    for (i = 0; i < kept; i++) { /* planes to the next row */
-        const zs_edge *e = &edges[ael[i]];
-        if (!e->trailing) {
-            zs_active *a = &act[e->owner];
-            int k;
-            a->zrow += a->zdy;
-            for (k = 0; k < 3; k++)
-                a->crow[k] += (uint32_t)a->cdy[k];
-        }
-    }
 }
 
 void zs_raster_row(zs_renderer *r, int y, uint8_t *row)

@@ -124,29 +124,77 @@ void zs_shade_setup(const zs_renderer *r, zs_active *a, const zs_tri *t, const z
             a->cdx[k] = color_gradient(d1 * dy2 - d2 * dy1, area2);
             a->cdy[k] = color_gradient(d2 * dx1 - d1 * dx2, area2);
             /* value at the origin pixel centre, +0.5 so truncation rounds */
-            co = c0 + 32768 + zs_floor_div64((int64_t)a->cdx[k] * offx + (int64_t)a->cdy[k] * offy, 16);
+            co = c0 + 32768 + zs_asr64((int64_t)a->cdx[k] * offx + (int64_t)a->cdy[k] * offy, 4);
             a->crow[k] = (uint32_t)(co + (int64_t)a->cdy[k] * ((int64_t)y - oy) -
                                     (int64_t)a->cdx[k] * ox);
         }
     }
 }
 
+#if defined(__GNUC__)
+/* Word stores into the caller's byte buffer; may_alias keeps them legal. */
+typedef uint32_t zs_word_alias __attribute__((may_alias));
+typedef uint16_t zs_half_alias __attribute__((may_alias));
+#define ZS_WORD_STORES 1
+#endif
+
+/* n pixels of 2 bytes (b0, b1) from p. */
+static void fill2(uint8_t *p, int n, uint8_t b0, uint8_t b1)
+{
+#ifdef ZS_WORD_STORES
+    if (((uintptr_t)p & 1u) == 0 && n > 0) {
+        union {
+            uint8_t b[4];
+            uint32_t w;
+            uint16_t h[2];
+        } u;
+        zs_word_alias *q;
+        u.b[0] = u.b[2] = b0;
+        u.b[1] = u.b[3] = b1;
+        if ((uintptr_t)p & 2u) {
+            *(zs_half_alias *)(void *)p = u.h[0];
+            p += 2;
+            n--;
+        }
+        q = (zs_word_alias *)(void *)p;
+        for (; n >= 8; n -= 8, q += 4) {
+            q[0] = u.w;
+            q[1] = u.w;
+            q[2] = u.w;
+            q[3] = u.w;
+        }
+        for (; n >= 2; n -= 2)
+            *q++ = u.w;
+        if (n)
+            *(zs_half_alias *)(void *)q = u.h[0];
+        return;
+    }
+#endif
+    for (; n > 0; n--, p += 2) {
+        p[0] = b0;
+        p[1] = b1;
+    }
+}
+
 void zs_fill_flat(uint8_t *row, int x0, int x1, unsigned bpp, uint32_t pixel)
 {
-    uint8_t b[4];
+    union {
+        uint32_t w;
+        uint8_t b[4];
+    } u;
     uint8_t *p = row + (size_t)x0 * bpp;
-    int n = x1 - x0, i;
-    memcpy(b, &pixel, 4);
-    if (bpp == 1 || (b[0] == b[1] && (bpp == 2 || b[1] == b[2]))) {
-        memset(p, b[0], (size_t)n * bpp);
-    } else if (bpp == 2) {
-        for (i = 0; i < n; i++, p += 2)
-            memcpy(p, b, 2);
+    int n = x1 - x0;
+    u.w = pixel;
+    if (bpp == 2) {
+        fill2(p, n, u.b[0], u.b[1]);
+    } else if (bpp == 1) {
+        for (; n > 0; n--)
+            *p++ = u.b[0];
     } else {
-        for (i = 0; i < n; i++, p += 3) {
-            p[0] = b[0];
-            p[1] = b[1];
-            p[2] = b[2];
+        for (; n > 0; n--, p += 3) {
+            p[0] = u.b[0];
+            p[1] = u.b[1];
+            p[2] = u.b[2];
         }
     }
 }
@@ -159,46 +207,59 @@ static uint32_t channel(uint32_t acc)
     return acc > 255u ? 255u : acc;
 }
 
+/* The colour planes stepped along a span, one loop per format. */
+#define GOURAUD_LOOP(BPP, STORE)                                                          \
+    for (x = x0; x < x1; x++, p += (BPP)) {                                               \
+        uint32_t R = channel(cr), G = channel(cg), B = channel(cb);                       \
+        STORE;                                                                            \
+        cr += dr;                                                                         \
+        cg += dg;                                                                         \
+        cb += db;                                                                         \
+    }
+
 void zs_fill_gouraud(const zs_renderer *r, const zs_active *a, uint8_t *row, int x0, int x1)
 {
     uint32_t cr = a->crow[0] + (uint32_t)a->cdx[0] * (uint32_t)x0;
     uint32_t cg = a->crow[1] + (uint32_t)a->cdx[1] * (uint32_t)x0;
     uint32_t cb = a->crow[2] + (uint32_t)a->cdx[2] * (uint32_t)x0;
     uint32_t dr = (uint32_t)a->cdx[0], dg = (uint32_t)a->cdx[1], db = (uint32_t)a->cdx[2];
-    zs_format fmt = r->shade.format;
-    unsigned bpp = r->bpp;
-    uint8_t *p = row + (size_t)x0 * bpp;
+    uint8_t *p = row + (size_t)x0 * r->bpp;
     int x;
-    for (x = x0; x < x1; x++, p += bpp) {
-        uint32_t R = channel(cr), G = channel(cg), B = channel(cb);
-        switch (fmt) {
-        case ZS_FMT_RGB565_BE: {
+    switch (r->shade.format) {
+    case ZS_FMT_RGB565_BE:
+        GOURAUD_LOOP(2, {
             uint32_t v = ((R >> 3) << 11) | ((G >> 2) << 5) | (B >> 3);
             p[0] = (uint8_t)(v >> 8);
             p[1] = (uint8_t)v;
-            break;
-        }
-        case ZS_FMT_RGB565: {
-            uint16_t v = (uint16_t)(((R >> 3) << 11) | ((G >> 2) << 5) | (B >> 3));
-            memcpy(p, &v, 2);
-            break;
-        }
-        case ZS_FMT_RGB666:
+        })
+        break;
+    case ZS_FMT_RGB565:
+        GOURAUD_LOOP(2, {
+            union {
+                uint16_t v;
+                uint8_t b[2];
+            } u;
+            u.v = (uint16_t)(((R >> 3) << 11) | ((G >> 2) << 5) | (B >> 3));
+            p[0] = u.b[0];
+            p[1] = u.b[1];
+        })
+        break;
+    case ZS_FMT_RGB666:
+        GOURAUD_LOOP(3, {
             p[0] = (uint8_t)(R & 0xFCu);
             p[1] = (uint8_t)(G & 0xFCu);
             p[2] = (uint8_t)(B & 0xFCu);
-            break;
-        case ZS_FMT_GRAY8:
-            p[0] = (uint8_t)((77u * R + 150u * G + 29u * B) >> 8);
-            break;
-        default:
+        })
+        break;
+    case ZS_FMT_GRAY8:
+        GOURAUD_LOOP(1, p[0] = (uint8_t)((77u * R + 150u * G + 29u * B) >> 8))
+        break;
+    default:
+        GOURAUD_LOOP(3, {
             p[0] = (uint8_t)R;
             p[1] = (uint8_t)G;
             p[2] = (uint8_t)B;
-            break;
-        }
-        cr += dr;
-        cg += dg;
-        cb += db;
+        })
+        break;
     }
 }

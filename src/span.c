@@ -7,7 +7,9 @@
  *
  * Work stays small because a decision is only made when something changes:
  *  - a triangle entering is compared with the top once, at its first column;
- *  - when the top leaves, the nearest of the rest is picked;
+ *  - when the top leaves, the nearest of the rest is picked, once all the
+ *    events at that column are in (where a mesh's triangles share an edge,
+ *    one leaves and the next enters at the same column);
  *  - two depth planes differ linearly along a row, so for each other member
  *    the first column where it would overtake the top (a penetration) is
  *    computed once, and only when it lies before either of the two ends
@@ -24,6 +26,7 @@ typedef struct row_ctx {
     uint16_t *set;
     uint8_t *row;
     zs_active *top;       /* nearest member, or NULL when the set is empty */
+    int dirty;            /* the top left: pick again before the next span */
     int32_t width;
     int32_t min_cross;    /* first column where a member overtakes the top */
     uint32_t background;  /* packed background pixel */
@@ -41,15 +44,10 @@ static int nearer(int64_t za, const zs_active *a, int64_t zb, const zs_active *b
     return za < zb || (za == zb && a->tri < b->tri);
 }
 
-static int32_t right_column(const row_ctx *c, const zs_active *a)
-{
-    return zs_clampi(c->edges[a->right].x, 0, c->width);
-}
-
 /* First column after x where j overtakes top, or NO_CROSS when that does not
  * happen before one of the two triangles ends on this row. zj, zt: depths
  * at x, where top wins. */
-static int32_t overtake(const row_ctx *c, const zs_active *j, const zs_active *top, int32_t x,
+static int32_t overtake(const zs_active *j, const zs_active *top, int32_t x,
                         int64_t zj, int64_t zt)
 {
     int64_t slope = top->zdx - j->zdx, gap = zj - zt, reach, k;
@@ -57,12 +55,7 @@ static int32_t overtake(const row_ctx *c, const zs_active *j, const zs_active *t
     int j_wins_tie = j->tri < top->tri;
     if (slope <= 0)
         return NO_CROSS; /* j never gets nearer along this row */
-    lim = right_column(c, top);
-    {
-        int32_t lj = right_column(c, j);
-        if (lj < lim)
-            lim = lj;
-    }
+    lim = top->xr < j->xr ? top->xr : j->xr;
     if (lim - x <= 1)
         return NO_CROSS;
     reach = slope * (lim - x - 1); /* how much the gap closes by the last shared column */
@@ -88,12 +81,13 @@ static void retop(row_ctx *c, int32_t x)
     }
     c->evals += (uint32_t)ns;
     c->top = best;
+    c->dirty = 0;
     c->min_cross = NO_CROSS;
     for (k = 0; k < ns; k++) {
         zs_active *a = &c->act[c->set[k]];
         if (a == best)
             continue;
-        a->cross = overtake(c, a, best, x, a->zcur, bz);
+        a->cross = overtake(a, best, x, a->zcur, bz);
         if (a->cross < c->min_cross)
             c->min_cross = a->cross;
     }
@@ -114,6 +108,8 @@ static void fill(row_ctx *c, int32_t x0, int32_t x1)
 /* Columns [x0, x1) with the set unchanged: split where the top is overtaken. */
 static void emit(row_ctx *c, int32_t x0, int32_t x1)
 {
+    if (c->dirty)
+        retop(c, x0);
     while (c->top && c->min_cross < x1) {
         int32_t xc = c->min_cross;
         fill(c, x0, xc);
@@ -130,6 +126,9 @@ static void enter(row_ctx *c, zs_active *a, uint16_t ai, int32_t x)
     a->set_pos = c->r->n_set;
     c->set[c->r->n_set++] = ai;
     a->cross = NO_CROSS;
+    a->xr = (int16_t)zs_clampi(c->edges[a->right].x, 0, c->width);
+    if (c->dirty)
+        return; /* the pick after this column's events includes it */
     if (!c->top) {
         c->top = a;
         c->min_cross = NO_CROSS;
@@ -142,7 +141,7 @@ static void enter(row_ctx *c, zs_active *a, uint16_t ai, int32_t x)
         retop(c, x); /* a is the new top; every member's crossing changes */
         return;
     }
-    a->cross = overtake(c, a, c->top, x, za, zt);
+    a->cross = overtake(a, c->top, x, za, zt);
     if (a->cross < c->min_cross)
         c->min_cross = a->cross;
 }
@@ -152,11 +151,13 @@ static void leave(row_ctx *c, zs_active *a, int32_t x)
     uint16_t last = c->set[--c->r->n_set];
     c->set[a->set_pos] = last;
     c->act[last].set_pos = a->set_pos;
+    (void)x;
     if (a == c->top) {
         c->top = 0;
         c->min_cross = NO_CROSS;
-        if (c->r->n_set > 0)
-            retop(c, x);
+        c->dirty = c->r->n_set > 0;
+    } else if (c->dirty) {
+        return;
     } else if (a->cross == c->min_cross && a->cross != NO_CROSS) {
         int k;
         c->min_cross = NO_CROSS;
@@ -182,6 +183,7 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
     c.set = (uint16_t *)r->in_set;
     c.row = row;
     c.top = 0;
+    c.dirty = 0;
     c.width = r->cfg.width;
     c.min_cross = NO_CROSS;
     c.evals = 0;

@@ -58,7 +58,8 @@ typedef struct zs_active {
     int32_t cdx[3], cdy[3];/* colour per column and per row (Q8.16) */
     uint32_t pixel;        /* packed pixel of a flat triangle */
     uint16_t tri;          /* record index: the submission order for ties */
-    uint16_t left, right;  /* its two edges */
+    uint16_t right;        /* its right (trailing) edge */
+    int16_t xr;            /* span walk: clamped right column on this row */
     uint8_t gouraud;       /* colour varies across the triangle */
     int8_t inside;         /* in/out counter while walking a row */
     uint16_t set_pos;      /* position in the in-polygon set */
@@ -73,6 +74,7 @@ typedef char zs_check_edge[(sizeof(zs_edge) == ZS_EDGE_BYTES) ? 1 : -1];
 typedef char zs_check_active[(sizeof(zs_active) == ZS_ACTIVE_BYTES) ? 1 : -1];
 
 /* ---- integer helpers (fixed.c) ---- */
+static inline int32_t zs_asr32(int32_t v, unsigned s);
 int64_t zs_floor_div64(int64_t a, int64_t b);       /* b > 0 */
 int64_t zs_round_div64(int64_t a, int64_t b);       /* b > 0, half up */
 int32_t zs_sat32(int64_t v, uint32_t *saturated);   /* clamp to int32, count */
@@ -103,7 +105,7 @@ int64_t zs_area2(const zs_vert *a, const zs_vert *b, const zs_vert *c);
 /* First row whose pixel centre is at or below y (28.4): ceil(y/16 - 0.5). */
 static inline int32_t zs_first_row(int32_t y)
 {
-    return (int32_t)zs_floor_div64((int64_t)y + 7, 16);
+    return zs_asr32(y + 7, 4);
 }
 /* Culls, bounds and stores one screen triangle; returns ZS_SETUP_*. */
 int zs_setup_triangle(zs_renderer *r, uint16_t v0, uint16_t v1, uint16_t v2, uint32_t color,
@@ -123,7 +125,7 @@ unsigned zs_outcode(const zs_renderer *r, int32_t xc, int32_t yc, int32_t w);
 
 /* activate.c: edges and planes of a triangle reaching its first row */
 /* Returns the active triangle's index, or ZS_NONE when the pools are full. */
-uint16_t zs_activate(zs_renderer *r, uint16_t tri, int32_t y);
+uint16_t zs_activate(zs_renderer *r, uint16_t tri, int32_t y, uint16_t *left);
 void zs_edge_continue(zs_renderer *r, zs_edge *e, int32_t y);
 /* raster.c: rows, edges, the active edge list */
 void zs_raster_begin(zs_renderer *r);
@@ -141,6 +143,18 @@ uint32_t zs_light_color(uint32_t rgb, zs_fixed intensity);
 /* span.c / zline.c: one row's visibility */
 void zs_span_row(zs_renderer *r, int y, uint8_t *row);
 void zs_zline_row(zs_renderer *r, int y, uint8_t *row);
+
+/* floor(v / 2^s) for either sign. Shifting ~v keeps the operand non-negative
+ * (well defined in C99); compilers emit a single arithmetic shift. */
+static inline int64_t zs_asr64(int64_t v, unsigned s)
+{
+    return v < 0 ? ~(~v >> s) : v >> s;
+}
+
+static inline int32_t zs_asr32(int32_t v, unsigned s)
+{
+    return v < 0 ? ~(~v >> s) : v >> s;
+}
 
 static inline int32_t zs_clampi(int32_t v, int32_t lo, int32_t hi)
 {

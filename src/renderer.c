@@ -134,6 +134,10 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
     r->mode = (uint8_t)mode;
     r->proj_sy = (zs_fixed)cot;
     r->proj_sx = (zs_fixed)((cot * r->cfg.height) / r->cfg.width);
+    {
+        int64_t f = cam->far_z, n = cam->near_z;
+        r->depth_scale = f < 8 * (f - n) ? (f * ((int64_t)1 << 30)) / (f - n) : 0;
+    }
     memset(&r->stats, 0, sizeof r->stats);
     r->shade = zs_shade_default();
     r->bpp = (uint8_t)zs_format_bytes(r->shade.format);

@@ -7,27 +7,48 @@
  * the area below 2^37 (see raster.c). */
 #include "zs_internal.h"
 
-/* Window depth z = far (w - near) / ((far - near) w), Q2.30, for near <= w <= far. */
-static uint32_t window_depth(const zs_renderer *r, int32_t w)
+/* Number of left shifts that bring 0 < v < 2^31 into [2^30, 2^31). */
+static unsigned norm_shift(uint32_t v)
 {
-    int64_t n = r->cam.near_z, f = r->cam.far_z, q, z;
-    if (w <= n)
-        return 0;
-    q = (n * ((int64_t)1 << 30)) / w; /* near / w in Q30, <= 2^30 */
-    z = (((int64_t)1 << 30) - q) * f / (f - n);
-    if (z > ((int64_t)1 << 30))
-        z = (int64_t)1 << 30;
-    return (uint32_t)z;
+#if defined(__GNUC__)
+    return (unsigned)__builtin_clz(v) - 1u;
+#else
+    unsigned s = 0;
+    while (v < 0x40000000u) {
+        v <<= 1;
+        s++;
+    }
+    return s;
+#endif
 }
 
+/* One division per vertex: 1/w as a normalised reciprocal, then products.
+ *   w * 2^s in [2^30, 2^31), inv = 2^61 / (w * 2^s) in (2^30, 2^31],
+ *   xc / w = xc * inv * 2^(s - 61).
+ * Window depth z = far (w - near) / ((far - near) w) = A (1 - near / w) with
+ * A = far / (far - near) precomputed per frame (depth_scale, Q30). */
 void zs_project(const zs_renderer *r, int32_t xc, int32_t yc, int32_t w, int32_t *x,
                 int32_t *y, uint32_t *z)
 {
-    int64_t hw = 8 * (int64_t)r->cfg.width;  /* half the width in 1/16 px */
+    int64_t hw = 8 * (int64_t)r->cfg.width; /* half the width in 1/16 px */
     int64_t hh = 8 * (int64_t)r->cfg.height;
-    *x = (int32_t)(hw + zs_round_div64(hw * xc, w));
-    *y = (int32_t)(hh - zs_round_div64(hh * yc, w));
-    *z = window_depth(r, w);
+    unsigned s = norm_shift((uint32_t)w);
+    int64_t inv = (int64_t)(((uint64_t)1 << 61) / ((uint32_t)w << s));
+    int64_t nx = zs_asr64((int64_t)xc * inv, 33u - s); /* xc / w in Q28 */
+    int64_t ny = zs_asr64((int64_t)yc * inv, 33u - s);
+    int64_t q = ((int64_t)r->cam.near_z * inv) >> (31u - s); /* near / w in Q30 */
+    int64_t zz;
+    *x = (int32_t)(hw + zs_asr64(hw * nx + ((int64_t)1 << 27), 28));
+    *y = (int32_t)(hh - zs_asr64(hh * ny + ((int64_t)1 << 27), 28));
+    if (q >= ((int64_t)1 << 30)) {
+        zz = 0;
+    } else if (r->depth_scale != 0) {
+        zz = zs_asr64((((int64_t)1 << 30) - q) * r->depth_scale, 30);
+    } else { /* near close to far: A too large for the product */
+        int64_t f = r->cam.far_z;
+        zz = (((int64_t)1 << 30) - q) * f / (f - r->cam.near_z);
+    }
+    *z = (uint32_t)(zz > ((int64_t)1 << 30) ? ((int64_t)1 << 30) : zz);
 }
 
 uint16_t zs_project_vertex(zs_renderer *r, int32_t xc, int32_t yc, int32_t w, uint32_t shade)

@@ -47,9 +47,16 @@ void zs_pack_pixel(zs_format fmt, uint32_t rgb, uint8_t out[4])
         out[1] = (uint8_t)(v565 & 255u);
         break;
     case ZS_FMT_RGB565:
-    case ZS_FMT_ID16:
-        memcpy(out, &v565, 2);
+    case ZS_FMT_ID16: {
+        union {
+            uint16_t v;
+            uint8_t b[2];
+        } u;
+        u.v = v565;
+        out[0] = u.b[0];
+        out[1] = u.b[1];
         break;
+    }
     case ZS_FMT_RGB666:
         out[0] = (uint8_t)(r & 0xFCu);
         out[1] = (uint8_t)(g & 0xFCu);
@@ -94,19 +101,32 @@ void zs_shade_setup(const zs_renderer *r, zs_active *a, const zs_tri *t, const z
     uint32_t c[3];
     uint8_t px[4];
     int k;
+    union {
+        uint32_t w;
+        uint16_t h;
+        uint8_t b[4];
+    } u;
     if (r->shade.format == ZS_FMT_ID16) {
         a->gouraud = 0;
-        memcpy(px, &t->tag, 2);
-        px[2] = px[3] = 0;
-        memcpy(&a->pixel, px, 4);
+        u.w = 0;
+        u.h = t->tag;
+        a->pixel = u.w;
         return;
     }
-    for (k = 0; k < 3; k++)
-        c[k] = vertex_rgb(r, t, v[k]);
+    if ((t->color >> 24) == 0) { /* no per-vertex colour: flat */
+        c[0] = c[1] = c[2] = t->color;
+    } else {
+        for (k = 0; k < 3; k++)
+            c[k] = vertex_rgb(r, t, v[k]);
+    }
     if (c[0] == c[1] && c[1] == c[2]) {
         a->gouraud = 0;
         zs_pack_pixel(r->shade.format, c[0], px);
-        memcpy(&a->pixel, px, 4);
+        u.b[0] = px[0];
+        u.b[1] = px[1];
+        u.b[2] = px[2];
+        u.b[3] = px[3];
+        a->pixel = u.w;
         return;
     }
     a->gouraud = 1;
@@ -127,74 +147,6 @@ void zs_shade_setup(const zs_renderer *r, zs_active *a, const zs_tri *t, const z
             co = c0 + 32768 + zs_asr64((int64_t)a->cdx[k] * offx + (int64_t)a->cdy[k] * offy, 4);
             a->crow[k] = (uint32_t)(co + (int64_t)a->cdy[k] * ((int64_t)y - oy) -
                                     (int64_t)a->cdx[k] * ox);
-        }
-    }
-}
-
-#if defined(__GNUC__)
-/* Word stores into the caller's byte buffer; may_alias keeps them legal. */
-typedef uint32_t zs_word_alias __attribute__((may_alias));
-typedef uint16_t zs_half_alias __attribute__((may_alias));
-#define ZS_WORD_STORES 1
-#endif
-
-/* n pixels of 2 bytes (b0, b1) from p. */
-static void fill2(uint8_t *p, int n, uint8_t b0, uint8_t b1)
-{
-#ifdef ZS_WORD_STORES
-    if (((uintptr_t)p & 1u) == 0 && n > 0) {
-        union {
-            uint8_t b[4];
-            uint32_t w;
-            uint16_t h[2];
-        } u;
-        zs_word_alias *q;
-        u.b[0] = u.b[2] = b0;
-        u.b[1] = u.b[3] = b1;
-        if ((uintptr_t)p & 2u) {
-            *(zs_half_alias *)(void *)p = u.h[0];
-            p += 2;
-            n--;
-        }
-        q = (zs_word_alias *)(void *)p;
-        for (; n >= 8; n -= 8, q += 4) {
-            q[0] = u.w;
-            q[1] = u.w;
-            q[2] = u.w;
-            q[3] = u.w;
-        }
-        for (; n >= 2; n -= 2)
-            *q++ = u.w;
-        if (n)
-            *(zs_half_alias *)(void *)q = u.h[0];
-        return;
-    }
-#endif
-    for (; n > 0; n--, p += 2) {
-        p[0] = b0;
-        p[1] = b1;
-    }
-}
-
-void zs_fill_flat(uint8_t *row, int x0, int x1, unsigned bpp, uint32_t pixel)
-{
-    union {
-        uint32_t w;
-        uint8_t b[4];
-    } u;
-    uint8_t *p = row + (size_t)x0 * bpp;
-    int n = x1 - x0;
-    u.w = pixel;
-    if (bpp == 2) {
-        fill2(p, n, u.b[0], u.b[1]);
-    } else if (bpp == 1) {
-        for (; n > 0; n--)
-            *p++ = u.b[0];
-    } else {
-        for (; n > 0; n--, p += 3) {
-            p[0] = u.b[0];
-            p[1] = u.b[1];
-            p[2] = u.b[2];
         }
     }
 }

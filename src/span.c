@@ -189,7 +189,17 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
     c.evals = 0;
     zs_pack_pixel(r->shade.format, r->shade.format == ZS_FMT_ID16 ? 0 : r->shade.background,
                   bgpx);
-    memcpy(&c.background, bgpx, 4);
+    {
+        union {
+            uint32_t w;
+            uint8_t b[4];
+        } u;
+        u.b[0] = bgpx[0];
+        u.b[1] = bgpx[1];
+        u.b[2] = bgpx[2];
+        u.b[3] = bgpx[3];
+        c.background = u.w;
+    }
     r->n_set = 0;
     for (i = 0; i < n; i++) {
         const zs_edge *e = &c.edges[ael[i]];

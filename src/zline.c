@@ -18,7 +18,17 @@ void zs_zline_row(zs_renderer *r, int y, uint8_t *row)
     (void)y;
     zs_pack_pixel(r->shade.format, r->shade.format == ZS_FMT_ID16 ? 0 : r->shade.background,
                   bgpx);
-    memcpy(&background, bgpx, 4);
+    {
+        union {
+            uint32_t w;
+            uint8_t b[4];
+        } u;
+        u.b[0] = bgpx[0];
+        u.b[1] = bgpx[1];
+        u.b[2] = bgpx[2];
+        u.b[3] = bgpx[3];
+        background = u.w;
+    }
     zs_fill_flat(row, 0, w, bpp, background);
     r->stats.spans++;
     r->stats.pixels_shaded += (uint32_t)w;

@@ -133,7 +133,6 @@ void zs_raster_row(zs_renderer *r, int y, uint8_t *row); /* row NULL: step only 
 
 /* shade.c: pixel packing and span fills */
 void zs_pack_pixel(zs_format fmt, uint32_t rgb, uint8_t out[4]);
-void zs_fill_flat(uint8_t *row, int x0, int x1, unsigned bpp, uint32_t pixel);
 void zs_fill_gouraud(const zs_renderer *r, const zs_active *a, uint8_t *row, int x0, int x1);
 /* Sets the colour planes and flat pixel of an active triangle. */
 void zs_shade_setup(const zs_renderer *r, zs_active *a, const zs_tri *t, const zs_vert *v[3],
@@ -160,5 +159,75 @@ static inline int32_t zs_clampi(int32_t v, int32_t lo, int32_t hi)
 {
     return v < lo ? lo : (v > hi ? hi : v);
 }
+
+/* ---- span fills (inline: they run once per span) ---- */
+#if defined(__GNUC__)
+/* Word stores into the caller's byte buffer; may_alias keeps them legal. */
+typedef uint32_t zs_word_alias __attribute__((may_alias));
+typedef uint16_t zs_half_alias __attribute__((may_alias));
+#define ZS_WORD_STORES 1
+#endif
+
+/* n pixels of 2 bytes (b0, b1) from p. */
+static inline void zs_fill2(uint8_t *p, int n, uint8_t b0, uint8_t b1)
+{
+#ifdef ZS_WORD_STORES
+    if (((uintptr_t)p & 1u) == 0 && n > 0) {
+        union {
+            uint8_t b[4];
+            uint32_t w;
+            uint16_t h[2];
+        } u;
+        zs_word_alias *q;
+        u.b[0] = u.b[2] = b0;
+        u.b[1] = u.b[3] = b1;
+        if ((uintptr_t)p & 2u) {
+            *(zs_half_alias *)(void *)p = u.h[0];
+            p += 2;
+            n--;
+        }
+        q = (zs_word_alias *)(void *)p;
+        for (; n >= 8; n -= 8, q += 4) {
+            q[0] = u.w;
+            q[1] = u.w;
+            q[2] = u.w;
+            q[3] = u.w;
+        }
+        for (; n >= 2; n -= 2)
+            *q++ = u.w;
+        if (n)
+            *(zs_half_alias *)(void *)q = u.h[0];
+        return;
+    }
+#endif
+    for (; n > 0; n--, p += 2) {
+        p[0] = b0;
+        p[1] = b1;
+    }
+}
+
+static inline void zs_fill_flat(uint8_t *row, int x0, int x1, unsigned bpp, uint32_t pixel)
+{
+    union {
+        uint32_t w;
+        uint8_t b[4];
+    } u;
+    uint8_t *p = row + (size_t)x0 * bpp;
+    int n = x1 - x0;
+    u.w = pixel;
+    if (bpp == 2) {
+        zs_fill2(p, n, u.b[0], u.b[1]);
+    } else if (bpp == 1) {
+        for (; n > 0; n--)
+            *p++ = u.b[0];
+    } else {
+        for (; n > 0; n--, p += 3) {
+            p[0] = u.b[0];
+            p[1] = u.b[1];
+            p[2] = u.b[2];
+        }
+    }
+}
+
 
 #endif

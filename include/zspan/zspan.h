@@ -321,6 +321,7 @@ typedef struct zs_renderer {
     /* private: frame state */
     zs_vec3 light_dir[ZS_MAX_LIGHTS]; /* unit, Q16.16 */
     zs_fixed proj_sx, proj_sy;        /* clip-space x and y scale */
+    int64_t depth_scale;              /* far / (far - near) in Q30, 0 if >= 8 */
     uint32_t tag_counter;
     int32_t next_row;
     uint16_t n_verts, n_tris, n_ael, n_edge_free, n_active_free, n_set;

@@ -1,0 +1,253 @@
+/*
+ * zspan panel drivers: one generic MIPI-DCS driver driven by a constant data
+ * table per panel, plus the SSD1351 OLED (its own command set), and a frame
+ * streamer that renders the next band while the previous one is on the bus.
+ *
+ * Freestanding C99, no allocation, no floating point.
+ *
+ * Coordinates and windows
+ *  - Panel coordinates are the visible area at the current rotation: x right,
+ *    y down, (0, 0) the top-left pixel the viewer sees, width x height pixels.
+ *  - Every window in this API is HALF-OPEN: [x0, x1) x [y0, y1), like the rest
+ *    of zspan. The driver converts to the controllers' INCLUSIVE wire form
+ *    (CASET/RASET and SSD1351 0x15/0x75 carry start and end, both inclusive)
+ *    and adds the RAM offset of the module at the current rotation.
+ *
+ * Rotation r (0..3) turns the picture r * 90 degrees clockwise on the glass:
+ * with rotation 1 a viewer who turns the module 90 degrees counter-clockwise
+ * sees it upright. The driver derives MADCTL from the table's rotation-0 value
+ * (rotation 1 toggles MX|MV, 2 toggles MX|MY, 3 toggles MY|MV) and the RAM
+ * offsets from the physical position of the visible area in the controller's
+ * RAM, so one table entry covers all four rotations.
+ *
+ * Pixel formats: ZS_FMT_RGB565_BE (COLMOD 16 bpp, 2 bytes big-endian) and
+ * ZS_FMT_RGB666 (COLMOD 18 bpp, 3 bytes R, G, B in bits 7..2), as each panel's
+ * `formats` mask allows (ILI9488 over SPI: RGB666 only).
+ *
+ * Typical use:
+ *
+ *     zs_bus bus;  zs_bus_init(&bus, &my_ops, &my_port, ZS_BUS_ASYNC, 0);
+ *     zs_panel lcd;
+ *     zs_panel_init(&lcd, zs_panel_find("st7789-240x240"), &bus,
+ *                   ZS_FMT_RGB565_BE, 0);
+ *     ... zs_frame_begin / zs_frame_shading (format = lcd.format) / zs_draw ...
+ *     static uint8_t b0[240 * 2], b1[240 * 2];
+ *     zs_panel_frame_stats st;
+ *     zs_wire_model wm = zs_wire_model_default(62500000);
+ *     zs_panel_stream(&lcd, &renderer, b0, b1, sizeof b0, 1, &wm, &st);
+ */
+#ifndef ZSPAN_PANEL_H
+#define ZSPAN_PANEL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "zspan/bus.h"
+#include "zspan/zspan.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ------------------------------------------------------------------ */
+/* Command bytes                                                        */
+/* ------------------------------------------------------------------ */
+
+/* MIPI DCS (ST7789, ILI9341, ST7735, GC9A01, ILI9488). */
+#define ZS_DCS_NOP 0x00u
+#define ZS_DCS_SWRESET 0x01u
+#define ZS_DCS_SLPIN 0x10u
+#define ZS_DCS_SLPOUT 0x11u
+#define ZS_DCS_NORON 0x13u
+#define ZS_DCS_INVOFF 0x20u
+#define ZS_DCS_INVON 0x21u
+#define ZS_DCS_DISPOFF 0x28u
+#define ZS_DCS_DISPON 0x29u
+#define ZS_DCS_CASET 0x2Au    /* 4 params: xs hi, xs lo, xe hi, xe lo (inclusive) */
+#define ZS_DCS_RASET 0x2Bu    /* 4 params: ys hi, ys lo, ye hi, ye lo (inclusive) */
+#define ZS_DCS_RAMWR 0x2Cu
+#define ZS_DCS_MADCTL 0x36u   /* 1 param */
+#define ZS_DCS_COLMOD 0x3Au   /* 1 param */
+#define ZS_DCS_RAMWRC 0x3Cu
+
+#define ZS_MADCTL_MY 0x80u    /* row address order */
+#define ZS_MADCTL_MX 0x40u    /* column address order */
+#define ZS_MADCTL_MV 0x20u    /* row/column exchange */
+#define ZS_MADCTL_ML 0x10u    /* vertical refresh order */
+#define ZS_MADCTL_BGR 0x08u   /* RGB/BGR order */
+
+/* SSD1351 (128x128 colour OLED). */
+#define ZS_SSD1351_SETCOLUMN 0x15u   /* 2 params: start, end (inclusive) */
+#define ZS_SSD1351_SETROW 0x75u      /* 2 params: start, end (inclusive) */
+#define ZS_SSD1351_WRITERAM 0x5Cu
+#define ZS_SSD1351_REMAP 0xA0u       /* 1 param: remap and colour depth */
+#define ZS_SSD1351_STARTLINE 0xA1u
+#define ZS_SSD1351_DISPLAYOFFSET 0xA2u
+#define ZS_SSD1351_NORMAL 0xA6u
+#define ZS_SSD1351_INVERSE 0xA7u
+#define ZS_SSD1351_SLEEP_ON 0xAEu    /* display off */
+#define ZS_SSD1351_SLEEP_OFF 0xAFu   /* display on */
+#define ZS_SSD1351_COMMANDLOCK 0xFDu /* 1 param: 0x12 unlock, 0x16 lock, 0xB1/0xB0 */
+
+/* SSD1351 remap (0xA0) parameter bits. */
+#define ZS_SSD1351_RM_VINC 0x01u      /* vertical address increment */
+#define ZS_SSD1351_RM_COLREMAP 0x02u  /* column address 0 -> SEG127 */
+#define ZS_SSD1351_RM_CBA 0x04u       /* colour sequence C, B, A */
+#define ZS_SSD1351_RM_COMREMAP 0x10u  /* scan COM127 -> COM0 */
+#define ZS_SSD1351_RM_COMSPLIT 0x20u  /* odd/even COM split */
+#define ZS_SSD1351_RM_65K 0x40u       /* bits 7:6 = 01: 65k colours (2 bytes) */
+#define ZS_SSD1351_RM_262K 0x80u      /* bits 7:6 = 10: 262k colours (3 bytes, bits 5..0) */
+
+/* ------------------------------------------------------------------ */
+/* Panel descriptions (constant tables)                                 */
+/* ------------------------------------------------------------------ */
+
+typedef enum zs_panel_proto {
+    ZS_PANEL_DCS = 0,      /* MIPI DCS command set */
+    ZS_PANEL_SSD1351 = 1   /* Solomon SSD1351 command set */
+} zs_panel_proto;
+
+/* Module-specific init commands, run after SLPOUT (DCS) or after the unlock
+ * (SSD1351): records of
+ *     cmd, n, param[0] .. param[n-1] [, delay]
+ * where n's bit 7 (ZS_INIT_DELAY) says a delay byte (milliseconds) follows
+ * the parameters; n & 0x7F is the parameter count. */
+#define ZS_INIT_DELAY 0x80u
+
+typedef struct zs_panel_desc {
+    const char *name;            /* e.g. "st7789-240x240" */
+    uint8_t proto;               /* zs_panel_proto */
+    uint8_t madctl;              /* MADCTL at rotation 0 (mirror and BGR bits of
+                                    this module); SSD1351: the same bits, mapped
+                                    to its remap register by the driver */
+    uint8_t invert;              /* 1: the glass needs INVON (IPS) for normal colours */
+    uint8_t formats;             /* bit (1u << zs_format) per supported format */
+    uint8_t colmod_565;          /* COLMOD for 16 bpp (0 = unsupported) */
+    uint8_t colmod_666;          /* COLMOD for 18 bpp (0 = unsupported) */
+    uint16_t width, height;      /* visible pixels at rotation 0 */
+    uint16_t ram_width, ram_height;   /* controller RAM, columns x rows */
+    uint16_t col_offset, row_offset;  /* first visible RAM column / row, counted
+                                         in physical RAM (no mirroring) */
+    uint32_t max_spi_hz;         /* rated write clock */
+    const uint8_t *init;         /* module init records (see ZS_INIT_DELAY) */
+    uint16_t init_len;           /* bytes in init */
+} zs_panel_desc;
+
+/* Built-in tables. */
+extern const zs_panel_desc zs_panel_st7789_240x240;
+extern const zs_panel_desc zs_panel_st7789_240x320;
+extern const zs_panel_desc zs_panel_st7789_135x240;
+extern const zs_panel_desc zs_panel_ili9341;        /* 240x320, 320x240 at rotation 1/3 */
+extern const zs_panel_desc zs_panel_st7735_128x160;
+extern const zs_panel_desc zs_panel_gc9a01;         /* 240x240 round */
+extern const zs_panel_desc zs_panel_ili9488;        /* 320x480, 480x320 at rotation 1/3 */
+extern const zs_panel_desc zs_panel_ssd1351;        /* 128x128 OLED */
+
+/* Number of built-in tables, the i-th one (NULL past the end), and lookup by
+ * name (exact, NULL if unknown). */
+unsigned zs_panel_count(void);
+const zs_panel_desc *zs_panel_at(unsigned i);
+const zs_panel_desc *zs_panel_find(const char *name);
+
+/* ------------------------------------------------------------------ */
+/* The driver                                                           */
+/* ------------------------------------------------------------------ */
+
+typedef enum zs_panel_status {
+    ZS_PANEL_OK = 0,
+    ZS_PANEL_ERR_NULL,      /* NULL panel, description, bus or buffer */
+    ZS_PANEL_ERR_IO,        /* the bus reported a failure */
+    ZS_PANEL_ERR_FORMAT,    /* pixel format not supported by this panel */
+    ZS_PANEL_ERR_ROTATION,  /* rotation not 0..3 */
+    ZS_PANEL_ERR_WINDOW,    /* empty window or outside the visible area */
+    ZS_PANEL_ERR_STATE,     /* not initialised, or pixels without a window */
+    ZS_PANEL_ERR_DESC,      /* inconsistent description table */
+    ZS_PANEL_ERR_BUFFER,    /* buffer smaller than one row, or odd size */
+    ZS_PANEL_ERR_RENDER     /* zs_render_rows failed (see render_status) */
+} zs_panel_status;
+
+const char *zs_panel_strerror(zs_panel_status s);
+
+/* Driver state. Read the fields; change them only through the functions. */
+typedef struct zs_panel {
+    const zs_panel_desc *desc;
+    zs_bus *bus;
+    zs_format format;
+    uint8_t rotation;          /* 0..3 */
+    uint8_t madctl;            /* last MADCTL (or abstract SSD1351 orientation) sent */
+    uint8_t inverted;          /* user inversion on top of the module's need */
+    uint8_t ready;             /* init done */
+    uint8_t use_ramwrc;        /* DCS: send RAMWRC before each later write (default 0) */
+    uint16_t width, height;    /* visible size at this rotation */
+    uint16_t x_offset, y_offset;  /* RAM address of visible (0, 0) at this rotation */
+    uint32_t window_bytes;     /* bytes left in the current window (0 = none open) */
+    uint32_t window_total;     /* bytes of the window opened last */
+} zs_panel;
+
+/* Hardware reset (if the bus has a reset hook), software reset, sleep out,
+ * module init records, pixel format, orientation, inversion, normal mode and
+ * display on, with the datasheet delays through the bus's delay hook.
+ * rotation 0..3. The backlight is not touched (see zs_panel_backlight). */
+zs_panel_status zs_panel_init(zs_panel *p, const zs_panel_desc *desc, zs_bus *bus,
+                              zs_format format, unsigned rotation);
+
+/* Bytes per pixel on the wire for a format (2 or 3; 0 if the panel does not
+ * support it). */
+unsigned zs_panel_bytes_per_pixel(const zs_panel_desc *desc, zs_format format);
+
+/* MADCTL (DCS) for a rotation, with the module's mirror and BGR bits. */
+uint8_t zs_panel_madctl_for(const zs_panel_desc *desc, unsigned rotation);
+/* Visible size and RAM address offsets for a rotation (any pointer may be NULL). */
+zs_panel_status zs_panel_geometry(const zs_panel_desc *desc, unsigned rotation, uint16_t *width,
+                                  uint16_t *height, uint16_t *x_offset, uint16_t *y_offset);
+
+zs_panel_status zs_panel_set_rotation(zs_panel *p, unsigned rotation);
+/* Inverts the displayed colours (on top of what the glass needs). */
+zs_panel_status zs_panel_set_inversion(zs_panel *p, int on);
+zs_panel_status zs_panel_display_on(zs_panel *p, int on);
+zs_panel_status zs_panel_backlight(zs_panel *p, uint8_t level);
+
+/* Opens the half-open window [x0, x1) x [y0, y1) (panel coordinates) and
+ * starts a memory write (DCS: CASET, RASET, RAMWR; SSD1351: 0x15, 0x75, 0x5C).
+ * Pixels then go row by row, left to right, top to bottom. */
+zs_panel_status zs_panel_window(zs_panel *p, uint16_t x0, uint16_t y0, uint16_t x1, uint16_t y1);
+
+/* Sends n pixel bytes of the open window (any chunking, not necessarily whole
+ * pixels or rows). With an async bus the bytes belong to the bus until
+ * zs_bus_idle(). data is not const: for the SSD1351 at 18 bpp the driver
+ * converts the bytes in place from bits 7..2 to the controller's bits 5..0
+ * before sending. */
+zs_panel_status zs_panel_write(zs_panel *p, uint8_t *data, size_t n);
+
+/* ------------------------------------------------------------------ */
+/* Frame streaming                                                      */
+/* ------------------------------------------------------------------ */
+
+typedef struct zs_panel_frame_stats {
+    zs_bus_counters bus;       /* traffic of this frame (commands, bytes, ...) */
+    uint32_t bytes;            /* all bytes on the wire this frame */
+    uint32_t bands;            /* bands rendered and sent */
+    uint32_t wire_waits;       /* bands that found the bus still busy: the
+                                  wire, not the renderer, limited the rate */
+    uint64_t wire_ns;          /* the wire's time for this frame (model) */
+    zs_status render_status;   /* last zs_render_rows result */
+} zs_panel_frame_stats;
+
+/* Streams the current frame of r (after zs_frame_begin / zs_frame_shading /
+ * zs_draw) to the whole panel: one window, then band after band. The frame's
+ * format must be p->format and the renderer's size the panel's size at its
+ * rotation. Band k renders into buf[k % 2] while band k-1 may still be on the
+ * bus; a buffer is never rendered into while the bus owns it. buf1 may be
+ * NULL (one buffer: the renderer then waits for the wire each band).
+ * buf_bytes is the size of each buffer; band_rows (>= 1) is capped to what
+ * fits. wire may be NULL (no wire time). Returns when the last byte has been
+ * handed to the bus and the bus is idle. */
+zs_panel_status zs_panel_stream(zs_panel *p, zs_renderer *r, uint8_t *buf0, uint8_t *buf1,
+                                size_t buf_bytes, int band_rows, const zs_wire_model *wire,
+                                zs_panel_frame_stats *stats);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* ZSPAN_PANEL_H */

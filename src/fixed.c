@@ -36,6 +36,12 @@ int32_t zs_sat32(int64_t v, uint32_t *saturated)
     return (int32_t)v;
 }
 
+/* Public results saturate to the full int32 range. */
+static int32_t clamp32(int64_t v)
+{
+    return v > INT32_MAX ? INT32_MAX : (v < INT32_MIN ? INT32_MIN : (int32_t)v);
+}
+
 zs_vec3 zs_vec3_make(zs_fixed x, zs_fixed y, zs_fixed z)
 {
     zs_vec3 v;
@@ -48,14 +54,14 @@ zs_vec3 zs_vec3_make(zs_fixed x, zs_fixed y, zs_fixed z)
 zs_fixed zs_fx_mul(zs_fixed a, zs_fixed b)
 {
     int64_t p = (int64_t)a * b;
-    return zs_sat32(zs_asr64(p + 32768, 16), 0);
+    return clamp32(zs_asr64(p + 32768, 16));
 }
 
 zs_fixed zs_fx_div(zs_fixed a, zs_fixed b)
 {
     if (b == 0)
         return a < 0 ? -INT32_MAX : INT32_MAX;
-    return zs_sat32(((int64_t)a * 65536) / b, 0);
+    return clamp32(((int64_t)a * 65536) / b);
 }
 
 uint32_t zs_isqrt64(uint64_t v)
@@ -233,7 +239,7 @@ zs_mat34 zs_mat34_mul(const zs_mat34 *a, const zs_mat34 *b)
             s = zs_dot3_q16(a->m[i], col);
             if (j == 3)
                 s += a->m[i][3];
-            o.m[i][j] = zs_sat32(s, 0);
+            o.m[i][j] = clamp32(s);
         }
     }
     return o;
@@ -295,7 +301,7 @@ zs_vec3 zs_mat34_apply(const zs_mat34 *m, zs_vec3 p)
     in[2] = p.z;
     for (i = 0; i < 3; i++) {
         int64_t s = zs_dot3_q16(m->m[i], in) + m->m[i][3];
-        out[i] = zs_sat32(s, 0);
+        out[i] = clamp32(s);
     }
     return zs_vec3_make(out[0], out[1], out[2]);
 }

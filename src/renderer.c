@@ -20,7 +20,7 @@ static zs_status check_config(const zs_config *c)
         return ZS_ERR_NULL;
     if (c->width == 0 || c->height == 0 || c->width > ZS_MAX_DIM || c->height > ZS_MAX_DIM)
         return ZS_ERR_SIZE;
-    if (c->max_triangles == 0 || c->max_vertices < 3 || c->max_active_edges < 2 ||
+    if (c->max_triangles == 0 || c->max_vertices == 0 || c->max_active_edges < 2 ||
         c->max_active_edges > ZS_MAX_ACTIVE_EDGES)
         return ZS_ERR_CAPACITY;
     return ZS_OK;

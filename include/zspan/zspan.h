@@ -70,7 +70,9 @@ typedef struct zs_mat34 {
 } zs_mat34;
 
 zs_vec3 zs_vec3_make(zs_fixed x, zs_fixed y, zs_fixed z);
-/* Q16.16 multiply, rounded to nearest, saturated to the int32 range. */
+/* Q16.16 multiply, rounded to nearest (halves up), saturated to the int32
+ * range. (Inside the pipeline coordinates saturate symmetrically to
+ * +-INT32_MAX so that negating them is always defined.) */
 zs_fixed zs_fx_mul(zs_fixed a, zs_fixed b);
 /* Q16.16 divide, rounded toward zero, saturated; b == 0 gives +-INT32_MAX. */
 zs_fixed zs_fx_div(zs_fixed a, zs_fixed b);

@@ -43,31 +43,37 @@ static void edge_init(zs_edge *e, const zs_vert *a, const zs_vert *b, int32_t y)
     e->y_end = (int16_t)zs_first_row(b->y);
 }
 
-/* Q46 gradient num * 2^20 / area2, clamped to +-2^46 (only slivers get near). */
-static int64_t plane_gradient(int64_t num, int64_t area2, int64_t limit)
+/* Depth planes hold window depth in Q40 (10 bits below the vertices' Q30, so
+ * stepping across a row adds no visible error). Gradients are clamped to
+ * 256 depth ranges per pixel: with evaluation points at most 2^13 pixels from
+ * the origin every product stays below 2^62. A triangle steeper than that is
+ * narrower than 1/256 pixel across its depth range; only its depth is off.
+ * The gradient is num * 2^14 / area2 (num in Q30 * 1/16 px, area in 1/256 px^2). */
+#define ZS_DEPTH_GRADIENT_LIMIT ((int64_t)1 << 48)
+static int64_t plane_gradient(int64_t num, int64_t area2)
 {
+    const int64_t limit = ZS_DEPTH_GRADIENT_LIMIT;
     int64_t q = num / area2, rem = num % area2;
-    int64_t lim_q = limit >> 20;
+    int64_t lim_q = limit >> 14;
     if (q > lim_q)
         return limit;
     if (q < -lim_q)
         return -limit;
-    return q * ((int64_t)1 << 20) + (rem * ((int64_t)1 << 20)) / area2;
+    return q * ((int64_t)1 << 14) + (rem * ((int64_t)1 << 14)) / area2;
 }
 
 /* Depth plane of the triangle, origin at the pixel centre (ox, oy). */
 static void depth_plane(zs_active *a, const zs_vert *v[3], int64_t area2, int32_t ox, int32_t oy,
                         int32_t y)
 {
-    const int64_t limit = (int64_t)1 << 46;
     int64_t dx1 = (int64_t)v[1]->x - v[0]->x, dy1 = (int64_t)v[1]->y - v[0]->y;
     int64_t dx2 = (int64_t)v[2]->x - v[0]->x, dy2 = (int64_t)v[2]->y - v[0]->y;
     int64_t dz1 = (int64_t)v[1]->z - v[0]->z, dz2 = (int64_t)v[2]->z - v[0]->z;
     int64_t z0;
-    a->zdx = plane_gradient(dz1 * dy2 - dz2 * dy1, area2, limit);
-    a->zdy = plane_gradient(dz2 * dx1 - dz1 * dx2, area2, limit);
+    a->zdx = plane_gradient(dz1 * dy2 - dz2 * dy1, area2);
+    a->zdy = plane_gradient(dz2 * dx1 - dz1 * dx2, area2);
     /* depth at the origin pixel centre, from vertex 0 (less than a pixel away) */
-    z0 = (int64_t)v[0]->z * 65536 +
+    z0 = (int64_t)v[0]->z * 1024 +
          zs_asr64(a->zdx * (16 * (int64_t)ox + 8 - v[0]->x) +
                       a->zdy * (16 * (int64_t)oy + 8 - v[0]->y),
                   4);

@@ -255,7 +255,7 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
 
     for (t = 0; t < m->triangle_count; t++) {
         uint16_t idx[3];
-        uint16_t tag = (uint16_t)(++r->tag_counter);
+        uint16_t tag = (uint16_t)(r->tag_counter++ % 65535u + 1u);
         const zs_vert *v0, *v1, *v2;
         int outcome;
         r->stats.tris_submitted++;

@@ -51,8 +51,8 @@ typedef struct zs_edge {
 
 /* An active triangle: its planes, valid while it crosses the current row. */
 typedef struct zs_active {
-    int64_t zrow;          /* depth at column 0 of the current row (Q46) */
-    int64_t zdx, zdy;      /* depth per column and per row (Q46) */
+    int64_t zrow;          /* depth at column 0 of the current row (Q40) */
+    int64_t zdx, zdy;      /* depth per column and per row (Q40) */
     int64_t zcur;          /* scratch: depth at the current span start */
     uint32_t crow[3];      /* colour at column 0 of this row (Q8.16, wrapping) */
     int32_t cdx[3], cdy[3];/* colour per column and per row (Q8.16) */

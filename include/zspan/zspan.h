@@ -184,6 +184,8 @@ typedef struct zs_camera {
 /* View from eye toward target; up need not be perpendicular. All Q16.16. */
 zs_status zs_camera_look_at(zs_camera *cam, zs_vec3 eye, zs_vec3 target, zs_vec3 up);
 /* Perspective: vertical fov in (0, 180) degrees, 0 < near < far (Q16.16).
+ * The fov must also be wide enough that cot(fov/2) fits Q16.16 (above about
+ * 0.0035 degrees); narrower gives ZS_ERR_FOV.
  * The aspect ratio comes from the renderer's width and height (square pixels). */
 zs_status zs_camera_perspective(zs_camera *cam, zs_fixed fov_deg, zs_fixed near_z,
                                 zs_fixed far_z);
@@ -344,8 +346,12 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *params);
 
 /* Transforms, culls, clips and stores a mesh's triangles. model may be NULL
  * (identity). Each submitted triangle gets the next tag (1, 2, 3, ... in
- * submission order across the frame, wrapping past 65535), which ZS_FMT_ID16
- * writes. Triangles that do not fit the pools are dropped and counted. */
+ * submission order across the frame; after 65535 the count starts again at 1,
+ * as 0 means "no triangle"), which ZS_FMT_ID16 writes. A draw rejected with an
+ * error stores nothing and uses no tags. Triangles that do not fit the pools
+ * are dropped and counted (capacity policy: the last ones submitted lose).
+ * Normals are turned by the model matrix's 3x3 part; with a non-uniform scale
+ * in it, lighting is approximate. */
 zs_status zs_draw(zs_renderer *r, const zs_mesh *mesh, const zs_mat34 *model);
 
 /* Renders rows y0 .. y0+rows-1 into buf (row k at buf + k*stride) in the

@@ -80,83 +80,83 @@ static void depth_plane(zs_active *a, const zs_vert *v[3], int64_t area2, int32_
     a->zrow = z0 + a->zdy * ((int64_t)y - oy) - a->zdx * ox;
 }
 
-uint16_t zs_activate(zs_renderer *r, uint16_t ti, int32_t y, uint16_t *left)
+/* The triangle's vertices sorted by y (ties keep their order). */
+static void sort_by_y(const zs_renderer *r, const zs_tri *t, const zs_vert *v[3])
+{
+    const zs_vert *pool = (const zs_vert *)r->verts, *tmp;
+    v[0] = &pool[t->v[0]];
+    v[1] = &pool[t->v[1]];
+    v[2] = &pool[t->v[2]];
+    if (v[1]->y < v[0]->y) { tmp = v[0]; v[0] = v[1]; v[1] = tmp; }
+    if (v[2]->y < v[1]->y) { tmp = v[1]; v[1] = v[2]; v[2] = tmp; }
+    if (v[1]->y < v[0]->y) { tmp = v[0]; v[0] = v[1]; v[1] = tmp; }
+}
+
+/* Takes an edge from the pool for a -> b, owned by ai on one side, and
+ * appends it to the list's unsorted tail. */
+static uint16_t new_edge(zs_renderer *r, uint16_t ai, int left_side, const zs_vert *a,
+                         const zs_vert *b, int32_t y)
+{
+    uint16_t ei = ((uint16_t *)r->edge_free)[--r->n_edge_free];
+    zs_edge *e = &((zs_edge *)r->edges)[ei];
+    edge_init(e, a, b, y);
+    e->lead = left_side ? ai : (uint16_t)ZS_NONE;
+    e->trail = left_side ? (uint16_t)ZS_NONE : ai;
+    e->pad = 0;
+    ((uint16_t *)r->ael)[r->n_ael++] = ei;
+    if (!left_side)
+        ((zs_active *)r->active)[ai].right = ei;
+    return ei;
+}
+
+int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
 {
     zs_tri *t = &((zs_tri *)r->tris)[ti];
     const zs_vert *pool = (const zs_vert *)r->verts;
-    const zs_vert *v[3], *top, *mid, *bot, *tmp;
-    zs_edge *edges = (zs_edge *)r->edges;
-    uint16_t *efree = (uint16_t *)r->edge_free;
-    uint16_t *afree = (uint16_t *)r->active_free;
-    uint16_t ai, el, es;
+    const zs_vert *v[3], *s[3];
+    uint16_t ai;
     zs_active *a;
-    zs_edge *elong, *eshort;
     int64_t cross, area2;
     int32_t ox, oy;
+    int long_left;
     if (r->n_active_free < 1 || r->n_edge_free < 2) {
         r->stats.edges_dropped++; /* capacity policy: the triangle is skipped */
-        return ZS_NONE;
+        return 0;
     }
-    ai = afree[--r->n_active_free];
-    el = efree[--r->n_edge_free];
-    es = efree[--r->n_edge_free];
+    ai = ((uint16_t *)r->active_free)[--r->n_active_free];
     a = &((zs_active *)r->active)[ai];
-    elong = &edges[el];
-    eshort = &edges[es];
+    sort_by_y(r, t, s);
+    /* which side of the long edge top -> bottom the middle vertex lies on */
+    cross = ((int64_t)s[1]->x - s[0]->x) * ((int64_t)s[2]->y - s[0]->y) -
+            ((int64_t)s[2]->x - s[0]->x) * ((int64_t)s[1]->y - s[0]->y);
+    long_left = cross > 0; /* middle vertex to the right: the long edge leads */
+    a->tri = ti;
+    a->inside = 0;
+    a->set_pos = 0;
+    a->flags = long_left ? ZS_ACT_LONG_LEFT : 0;
+    a->y_end = (int16_t)zs_first_row(s[2]->y);
+    new_edge(r, ai, long_left, s[0], s[2], y);
+    if (y < zs_first_row(s[1]->y))
+        new_edge(r, ai, !long_left, s[0], s[1], y);
+    else
+        new_edge(r, ai, !long_left, s[1], s[2], y);
 
     v[0] = &pool[t->v[0]];
     v[1] = &pool[t->v[1]];
     v[2] = &pool[t->v[2]];
-    top = v[0];
-    mid = v[1];
-    bot = v[2];
-    if (mid->y < top->y) { tmp = top; top = mid; mid = tmp; }
-    if (bot->y < mid->y) { tmp = mid; mid = bot; bot = tmp; }
-    if (mid->y < top->y) { tmp = top; top = mid; mid = tmp; }
-    /* which side of the long edge top -> bot the middle vertex lies on */
-    cross = ((int64_t)mid->x - top->x) * ((int64_t)bot->y - top->y) -
-            ((int64_t)bot->x - top->x) * ((int64_t)mid->y - top->y);
-
-    edge_init(elong, top, bot, y);
-    if (y < zs_first_row(mid->y)) {
-        edge_init(eshort, top, mid, y);
-        eshort->upper = 1;
-    } else {
-        edge_init(eshort, mid, bot, y);
-        eshort->upper = 0;
-    }
-    elong->upper = 0;
-    elong->owner = eshort->owner = ai;
-    elong->pad = eshort->pad = 0;
-    /* mid to the right of the long edge: the long edge leads (left) */
-    elong->trailing = cross > 0 ? 0 : 1;
-    eshort->trailing = (uint8_t)!elong->trailing;
-    a->right = elong->trailing ? el : es;
-    a->tri = ti;
-    a->inside = 0;
-    a->set_pos = 0;
-    a->y_end = elong->y_end;
-
     area2 = zs_area2(v[0], v[1], v[2]);
     ox = zs_asr32(v[0]->x, 4);
     oy = zs_asr32(v[0]->y, 4);
     depth_plane(a, v, area2, ox, oy, y);
     zs_shade_setup(r, a, t, v, ox, oy, area2, y);
     r->stats.tris_drawn++;
-    *left = elong->trailing ? es : el;
-    return ai;
+    return 1;
 }
 
-/* Continues the upper short edge of an active triangle with the lower one. */
-void zs_edge_continue(zs_renderer *r, zs_edge *e, int32_t y)
+void zs_continue_edge(zs_renderer *r, uint16_t ai, int32_t y)
 {
-    const zs_active *a = &((const zs_active *)r->active)[e->owner];
-    const zs_tri *t = &((const zs_tri *)r->tris)[a->tri];
-    const zs_vert *pool = (const zs_vert *)r->verts;
-    const zs_vert *top = &pool[t->v[0]], *mid = &pool[t->v[1]], *bot = &pool[t->v[2]], *tmp;
-    if (mid->y < top->y) { tmp = top; top = mid; mid = tmp; }
-    if (bot->y < mid->y) { tmp = mid; mid = bot; bot = tmp; }
-    if (mid->y < top->y) { tmp = top; top = mid; mid = tmp; }
-    edge_init(e, mid, bot, y);
-    e->upper = 0;
+    const zs_active *a = &((const zs_active *)r->active)[ai];
+    const zs_vert *s[3];
+    sort_by_y(r, &((const zs_tri *)r->tris)[a->tri], s);
+    new_edge(r, ai, !(a->flags & ZS_ACT_LONG_LEFT), s[1], s[2], y);
 }

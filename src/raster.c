@@ -1,13 +1,16 @@
-/* The row loop: activate the row's triangles, merge their edges (sorted as a
- * batch) into the x-sorted active edge list, resolve the row, then step the
- * edges, retire finished ones and restore the order. */
+/* The row loop: activate the row's triangles, sort their new edges as a
+ * batch, fold edges that two triangles share into one record, merge the batch
+ * into the x-sorted active edge list, resolve the row, then step the edges,
+ * retire finished ones and restore the order. */
 #include "zs_internal.h"
 
 void zs_raster_begin(zs_renderer *r)
 {
     uint16_t *efree = (uint16_t *)r->edge_free;
     uint16_t *afree = (uint16_t *)r->active_free;
-    uint16_t e = r->cfg.max_active_edges, a = (uint16_t)((e + 1u) / 2u), i;
+    /* two edge sides per triangle: e / 2 triangles can never need more than
+     * e edges, even while shared edges split at their continuations */
+    uint16_t e = r->cfg.max_active_edges, a = (uint16_t)(e / 2u), i;
     /* free stacks, popped from the end: lowest indices first */
     for (i = 0; i < e; i++)
         efree[i] = (uint16_t)(e - 1u - i);
@@ -16,42 +19,80 @@ void zs_raster_begin(zs_renderer *r)
     r->n_edge_free = e;
     r->n_active_free = a;
     r->n_ael = 0;
+    r->n_sorted = 0;
 }
 
-/* Activates the triangles first met on row y and merges their edges. */
+/* Two new edges on the same line over the same rows, one ending a triangle
+ * and the other starting one: keep one record for both. Every pool edge is
+ * owned by at least one triangle side, so the pool never holds more edges
+ * than twice the active triangles. */
+static int fold_edge(zs_renderer *r, zs_edge *keep, uint16_t keep_i, zs_edge *dup)
+{
+    zs_active *act = (zs_active *)r->active;
+    if (keep->err != dup->err || keep->step != dup->step || keep->rstep != dup->rstep ||
+        keep->den != dup->den || keep->y_end != dup->y_end)
+        return 0;
+    if ((keep->lead != ZS_NONE && dup->lead != ZS_NONE) ||
+        (keep->trail != ZS_NONE && dup->trail != ZS_NONE))
+        return 0; /* same side twice (coplanar duplicates): keep both */
+    if (dup->lead != ZS_NONE)
+        keep->lead = dup->lead;
+    if (dup->trail != ZS_NONE) {
+        keep->trail = dup->trail;
+        act[dup->trail].right = keep_i;
+    }
+    return 1;
+}
+
+/* Activates the triangles first met on row y; sorts, folds and merges the
+ * unsorted tail (those edges plus continuations made by the last step). */
 static void add_new_edges(zs_renderer *r, int32_t y)
 {
     uint16_t *ael = (uint16_t *)r->ael;
-    const zs_edge *edges = (const zs_edge *)r->edges;
+    zs_edge *edges = (zs_edge *)r->edges;
     uint16_t *bucket = (uint16_t *)r->buckets;
     const zs_tri *tris = (const zs_tri *)r->tris;
-    uint16_t old_n = r->n_ael, n = old_n, ti;
-    int i, j, k;
-    for (ti = bucket[y]; ti != ZS_NONE; ti = tris[ti].next) {
-        uint16_t left, ai = zs_activate(r, ti, y, &left);
-        if (ai == ZS_NONE)
-            continue;
-        ael[n++] = left;
-        ael[n++] = ((const zs_active *)r->active)[ai].right;
-    }
-    if (n == old_n)
+    uint16_t *efree = (uint16_t *)r->edge_free;
+    int sorted = r->n_sorted, n, i, j, k, w;
+    uint16_t ti;
+    for (ti = bucket[y]; ti != ZS_NONE; ti = tris[ti].next)
+        zs_activate(r, ti, y);
+    n = r->n_ael;
+    if (n == sorted)
         return;
-    /* sort the new batch (insertion sort: batches are small) */
-    for (i = old_n + 1; i < n; i++) {
+    /* sort the batch (insertion sort: batches are small) */
+    for (i = sorted + 1; i < n; i++) {
         uint16_t e = ael[i];
         int32_t x = edges[e].x;
-        for (j = i; j > old_n && edges[ael[j - 1]].x > x; j--)
+        for (j = i; j > sorted && edges[ael[j - 1]].x > x; j--)
             ael[j] = ael[j - 1];
         ael[j] = e;
     }
+    /* fold shared edges: they start at the same column */
+    w = sorted;
+    for (i = sorted; i < n; i++) {
+        zs_edge *e = &edges[ael[i]];
+        int folded = 0;
+        for (j = w - 1; j >= sorted && edges[ael[j]].x == e->x; j--) {
+            if (fold_edge(r, &edges[ael[j]], ael[j], e)) {
+                efree[r->n_edge_free++] = ael[i];
+                folded = 1;
+                break;
+            }
+        }
+        if (!folded)
+            ael[w++] = ael[i];
+    }
+    n = w;
     /* merge from the back: both runs are sorted, the list has room */
-    if (old_n > 0) {
+    if (sorted > 0) {
         /* the free stack's unused top holds at least as many slots as there
          * are edges in use, so it serves as scratch for the batch */
-        uint16_t *batch = (uint16_t *)r->edge_free + r->n_edge_free;
-        int nb = n - old_n;
-        memcpy(batch, ael + old_n, (size_t)nb * sizeof batch[0]);
-        i = old_n - 1;
+        uint16_t *batch = efree + r->n_edge_free;
+        int nb = n - sorted;
+        for (i = 0; i < nb; i++)
+            batch[i] = ael[sorted + i];
+        i = sorted - 1;
         j = nb - 1;
         k = n - 1;
         while (j >= 0) {
@@ -61,7 +102,37 @@ static void add_new_edges(zs_renderer *r, int32_t y)
                 ael[k--] = batch[j--];
         }
     }
-    r->n_ael = n;
+    r->n_ael = (uint16_t)n;
+    r->n_sorted = (uint16_t)n;
+}
+
+static void step_planes(zs_active *a)
+{
+    a->zrow += a->zdy;
+    if (a->flags & ZS_ACT_GOURAUD) {
+        a->crow[0] += (uint32_t)a->cdy[0];
+        a->crow[1] += (uint32_t)a->cdy[1];
+        a->crow[2] += (uint32_t)a->cdy[2];
+    }
+}
+
+/* An edge ends above row `next`: each of its triangles either ends too (freed
+ * with its left edge) or goes on with its lower short edge (queued in cont). */
+static void retire_edge(zs_renderer *r, zs_edge *e, int32_t next, uint16_t *cont, int *n_cont)
+{
+    zs_active *act = (zs_active *)r->active;
+    uint16_t *afree = (uint16_t *)r->active_free;
+    if (e->lead != ZS_NONE) {
+        zs_active *a = &act[e->lead];
+        if (next >= a->y_end) {
+            afree[r->n_active_free++] = e->lead;
+        } else {
+            step_planes(a);
+            cont[(*n_cont)++] = e->lead;
+        }
+    }
+    if (e->trail != ZS_NONE && next < act[e->trail].y_end)
+        cont[(*n_cont)++] = e->trail;
 }
 
 /* Steps every edge to row y + 1, retires finished ones and keeps the list
@@ -73,37 +144,27 @@ static void step_edges(zs_renderer *r, int32_t y)
     zs_edge *edges = (zs_edge *)r->edges;
     zs_active *act = (zs_active *)r->active;
     uint16_t *efree = (uint16_t *)r->edge_free;
-    uint16_t *afree = (uint16_t *)r->active_free;
-    int i, n = r->n_ael, kept = 0;
+    /* continuations wait in the in-polygon set's array (unused between
+     * rows): at most one per active triangle */
+    uint16_t *cont = (uint16_t *)r->in_set;
+    int i, n = r->n_ael, kept = 0, n_cont = 0;
     int32_t next = y + 1, prev_x = INT32_MIN;
     for (i = 0; i < n; i++) {
         uint16_t ei = ael[i];
         zs_edge *e = &edges[ei];
-        zs_active *a = &act[e->owner];
         if (next >= e->y_end) {
-            if (!e->upper || next >= a->y_end) {
-                efree[r->n_edge_free++] = ei;
-                if (!e->trailing) /* free the triangle once, with its left edge */
-                    afree[r->n_active_free++] = e->owner;
-                continue;
-            }
-            zs_edge_continue(r, e, next);
-        } else {
-            e->x += e->step;
-            e->err -= e->rstep;
-            if (e->err < 0) {
-                e->err += e->den;
-                e->x++;
-            }
+            retire_edge(r, e, next, cont, &n_cont);
+            efree[r->n_edge_free++] = ei;
+            continue;
         }
-        if (!e->trailing) {
-            a->zrow += a->zdy;
-            if (a->gouraud) {
-                a->crow[0] += (uint32_t)a->cdy[0];
-                a->crow[1] += (uint32_t)a->cdy[1];
-                a->crow[2] += (uint32_t)a->cdy[2];
-            }
+        e->x += e->step;
+        e->err -= e->rstep;
+        if (e->err < 0) {
+            e->err += e->den;
+            e->x++;
         }
+        if (e->lead != ZS_NONE)
+            step_planes(&act[e->lead]);
         if (e->x >= prev_x) {
             prev_x = e->x;
             ael[kept++] = ei;
@@ -116,6 +177,11 @@ static void step_edges(zs_renderer *r, int32_t y)
         }
     }
     r->n_ael = (uint16_t)kept;
+    r->n_sorted = (uint16_t)kept;
+    /* lower short edges join the next row's batch (edges were freed first,
+     * so the pool has room) */
+    for (i = 0; i < n_cont; i++)
+        zs_continue_edge(r, cont[i], next);
 }
 
 void zs_raster_row(zs_renderer *r, int y, uint8_t *row)

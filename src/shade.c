@@ -107,7 +107,7 @@ void zs_shade_setup(const zs_renderer *r, zs_active *a, const zs_tri *t, const z
         uint8_t b[4];
     } u;
     if (r->shade.format == ZS_FMT_ID16) {
-        a->gouraud = 0;
+        a->flags &= (uint8_t)~ZS_ACT_GOURAUD;
         u.w = 0;
         u.h = t->tag;
         a->pixel = u.w;
@@ -120,7 +120,7 @@ void zs_shade_setup(const zs_renderer *r, zs_active *a, const zs_tri *t, const z
             c[k] = vertex_rgb(r, t, v[k]);
     }
     if (c[0] == c[1] && c[1] == c[2]) {
-        a->gouraud = 0;
+        a->flags &= (uint8_t)~ZS_ACT_GOURAUD;
         zs_pack_pixel(r->shade.format, c[0], px);
         u.b[0] = px[0];
         u.b[1] = px[1];
@@ -129,7 +129,7 @@ void zs_shade_setup(const zs_renderer *r, zs_active *a, const zs_tri *t, const z
         a->pixel = u.w;
         return;
     }
-    a->gouraud = 1;
+    a->flags |= ZS_ACT_GOURAUD;
     a->pixel = 0;
     {
         int64_t dx1 = (int64_t)v[1]->x - v[0]->x, dy1 = (int64_t)v[1]->y - v[0]->y;

@@ -98,7 +98,7 @@ static void fill(row_ctx *c, int32_t x0, int32_t x1)
     const zs_active *a = c->top;
     if (!a)
         zs_fill_flat(c->row, x0, x1, c->r->bpp, c->background);
-    else if (a->gouraud)
+    else if (a->flags & ZS_ACT_GOURAUD)
         zs_fill_gouraud(c->r, a, c->row, x0, x1);
     else
         zs_fill_flat(c->row, x0, x1, c->r->bpp, a->pixel);
@@ -203,18 +203,21 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
     r->n_set = 0;
     for (i = 0; i < n; i++) {
         const zs_edge *e = &c.edges[ael[i]];
-        zs_active *a = &c.act[e->owner];
         int32_t x = zs_clampi(e->x, 0, c.width);
         if (x > cur) { /* all events at a column are applied before its span */
             emit(&c, cur, x);
             cur = x;
         }
-        /* in/out counter: a span inverted by rounding is never entered */
-        if (!e->trailing) {
+        /* in/out counters: a span inverted by rounding is never entered */
+        if (e->trail != ZS_NONE) {
+            zs_active *a = &c.act[e->trail];
+            if (a->inside-- == 1)
+                leave(&c, a, x);
+        }
+        if (e->lead != ZS_NONE) {
+            zs_active *a = &c.act[e->lead];
             if (++a->inside == 1)
-                enter(&c, a, e->owner, x);
-        } else if (a->inside-- == 1) {
-            leave(&c, a, x);
+                enter(&c, a, e->lead, x);
         }
     }
     if (cur < c.width)

@@ -41,9 +41,9 @@ void zs_zline_row(zs_renderer *r, int y, uint8_t *row)
         const zs_active *a;
         int32_t xl, xr;
         int64_t z;
-        if (e->trailing)
+        if (e->lead == ZS_NONE)
             continue;
-        a = &act[e->owner];
+        a = &act[e->lead];
         xl = zs_clampi(e->x, 0, w);
         xr = zs_clampi(edges[a->right].x, 0, w);
         if (xl >= xr)
@@ -55,7 +55,7 @@ void zs_zline_row(zs_renderer *r, int y, uint8_t *row)
             if (z < depth[x] || (z == depth[x] && a->tri < owner[x])) {
                 depth[x] = z;
                 owner[x] = a->tri;
-                if (a->gouraud)
+                if (a->flags & ZS_ACT_GOURAUD)
                     zs_fill_gouraud(r, a, row, x, x + 1);
                 else
                     zs_fill_flat(row, x, x + 1, bpp, a->pixel);

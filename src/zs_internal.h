@@ -35,7 +35,10 @@ typedef struct zs_tri {
 #define ZS_TRI_FOG 0x02u       /* blend toward the fog colour by vertex fog */
 
 /* An edge stepped down the rows (28 bytes). Column = ceil(x - 0.5) exactly:
- * x is the integer column, err the remainder of the exact rational. */
+ * x is the integer column, err the remainder of the exact rational.
+ * Where two triangles of a mesh share an edge, one record serves both (as in
+ * Quake's edges with two surfaces): the walk leaves one triangle and enters
+ * the other at it, and it is stepped once. */
 typedef struct zs_edge {
     int32_t x;       /* first covered column at/after this edge, this row */
     int32_t err;     /* x * den - numerator, in [0, den) */
@@ -43,9 +46,8 @@ typedef struct zs_edge {
     int32_t rstep;   /* remainder per row, in [0, den) */
     int32_t den;     /* 16 * dy (1/16 px units) */
     int16_t y_end;   /* first row this edge no longer covers */
-    uint16_t owner;  /* active triangle */
-    uint8_t trailing;/* 1: right edge (span end), 0: left edge (span start) */
-    uint8_t upper;   /* 1: the upper short edge, continued by the lower one */
+    uint16_t lead;   /* active triangle this edge starts (its left edge), or ZS_NONE */
+    uint16_t trail;  /* active triangle this edge ends (its right edge), or ZS_NONE */
     uint16_t pad;
 } zs_edge;
 
@@ -60,12 +62,15 @@ typedef struct zs_active {
     uint16_t tri;          /* record index: the submission order for ties */
     uint16_t right;        /* its right (trailing) edge */
     int16_t xr;            /* span walk: clamped right column on this row */
-    uint8_t gouraud;       /* colour varies across the triangle */
+    uint8_t flags;         /* ZS_ACT_* */
     int8_t inside;         /* in/out counter while walking a row */
     uint16_t set_pos;      /* position in the in-polygon set */
     int16_t y_end;         /* first row below the triangle */
     int32_t cross;         /* span walk: column where it overtakes the top */
 } zs_active;
+
+#define ZS_ACT_GOURAUD 0x01u   /* colour varies across the triangle */
+#define ZS_ACT_LONG_LEFT 0x02u /* the long edge is its left edge */
 
 /* Compile-time checks that the header's sizes match the records. */
 typedef char zs_check_vert[(sizeof(zs_vert) == ZS_VERTEX_BYTES) ? 1 : -1];
@@ -124,9 +129,11 @@ int zs_clip_polygon(const zs_renderer *r, const zs_svert *in, int n, zs_svert *o
 unsigned zs_outcode(const zs_renderer *r, int32_t xc, int32_t yc, int32_t w);
 
 /* activate.c: edges and planes of a triangle reaching its first row */
-/* Returns the active triangle's index, or ZS_NONE when the pools are full. */
-uint16_t zs_activate(zs_renderer *r, uint16_t tri, int32_t y, uint16_t *left);
-void zs_edge_continue(zs_renderer *r, zs_edge *e, int32_t y);
+/* Makes the triangle's planes and its two edges, appended to the active edge
+ * list's unsorted tail; 0 when the pools are full (the triangle is skipped). */
+int zs_activate(zs_renderer *r, uint16_t tri, int32_t y);
+/* Appends the lower short edge of active triangle ai, starting at row y. */
+void zs_continue_edge(zs_renderer *r, uint16_t ai, int32_t y);
 /* raster.c: rows, edges, the active edge list */
 void zs_raster_begin(zs_renderer *r);
 void zs_raster_row(zs_renderer *r, int y, uint8_t *row); /* row NULL: step only */

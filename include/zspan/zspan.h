@@ -328,7 +328,7 @@ typedef struct zs_renderer {
     int64_t depth_scale;              /* far / (far - near) in Q30, 0 if >= 8 */
     uint32_t tag_counter;
     int32_t next_row;
-    uint16_t n_verts, n_tris, n_ael, n_edge_free, n_active_free, n_set;
+    uint16_t n_verts, n_tris, n_ael, n_sorted, n_edge_free, n_active_free, n_set;
     uint8_t state, mode, bpp, pad_;
     void (*setup_hook)(void *user, uint16_t tag, const int32_t xy[6], const uint32_t z[3]);
     void *setup_hook_user;

@@ -50,28 +50,17 @@ static void edge_init(zs_edge *e, const zs_vert *a, const zs_vert *b, int32_t y)
  * narrower than 1/256 pixel across its depth range; only its depth is off.
  * The gradient is num * 2^14 / area2 (num in Q30 * 1/16 px, area in 1/256 px^2). */
 #define ZS_DEPTH_GRADIENT_LIMIT ((int64_t)1 << 48)
-static int64_t plane_gradient(int64_t num, int64_t area2)
-{
-    const int64_t limit = ZS_DEPTH_GRADIENT_LIMIT;
-    int64_t q = num / area2, rem = num % area2;
-    int64_t lim_q = limit >> 14;
-    if (q > lim_q)
-        return limit;
-    if (q < -lim_q)
-        return -limit;
-    return q * ((int64_t)1 << 14) + (rem * ((int64_t)1 << 14)) / area2;
-}
 
 /* Depth plane of the triangle, origin at the pixel centre (ox, oy). */
-static void depth_plane(zs_active *a, const zs_vert *v[3], int64_t area2, int32_t ox, int32_t oy,
-                        int32_t y)
+static void depth_plane(zs_active *a, const zs_vert *v[3], const zs_recip *area2, int32_t ox,
+                        int32_t oy, int32_t y)
 {
     int64_t dx1 = (int64_t)v[1]->x - v[0]->x, dy1 = (int64_t)v[1]->y - v[0]->y;
     int64_t dx2 = (int64_t)v[2]->x - v[0]->x, dy2 = (int64_t)v[2]->y - v[0]->y;
     int64_t dz1 = (int64_t)v[1]->z - v[0]->z, dz2 = (int64_t)v[2]->z - v[0]->z;
     int64_t z0;
-    a->zdx = plane_gradient(dz1 * dy2 - dz2 * dy1, area2);
-    a->zdy = plane_gradient(dz2 * dx1 - dz1 * dx2, area2);
+    a->zdx = zs_recip_muldiv(area2, dz1 * dy2 - dz2 * dy1, 14, ZS_DEPTH_GRADIENT_LIMIT);
+    a->zdy = zs_recip_muldiv(area2, dz2 * dx1 - dz1 * dx2, 14, ZS_DEPTH_GRADIENT_LIMIT);
     /* depth at the origin pixel centre, from vertex 0 (less than a pixel away) */
     z0 = (int64_t)v[0]->z * 1024 +
          zs_asr64(a->zdx * (16 * (int64_t)ox + 8 - v[0]->x) +
@@ -116,7 +105,8 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     const zs_vert *v[3], *s[3];
     uint16_t ai;
     zs_active *a;
-    int64_t cross, area2;
+    int64_t cross;
+    zs_recip area2;
     int32_t ox, oy;
     int long_left;
     if (r->n_active_free < 1 || r->n_edge_free < 2) {
@@ -144,11 +134,11 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     v[0] = &pool[t->v[0]];
     v[1] = &pool[t->v[1]];
     v[2] = &pool[t->v[2]];
-    area2 = zs_area2(v[0], v[1], v[2]);
+    zs_recip_init(&area2, zs_area2(v[0], v[1], v[2]));
     ox = zs_asr32(v[0]->x, 4);
     oy = zs_asr32(v[0]->y, 4);
-    depth_plane(a, v, area2, ox, oy, y);
-    zs_shade_setup(r, a, t, v, ox, oy, area2, y);
+    depth_plane(a, v, &area2, ox, oy, y);
+    zs_shade_setup(r, a, t, v, ox, oy, &area2, y);
     r->stats.tris_drawn++;
     return 1;
 }

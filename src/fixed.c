@@ -21,19 +21,52 @@ int64_t zs_round_div64(int64_t a, int64_t b)
     return q;
 }
 
-int32_t zs_sat32(int64_t v, uint32_t *saturated)
+/* Leading zeros of a non-zero 64-bit value. */
+static unsigned clz64(uint64_t v)
 {
-    if (v > INT32_MAX) {
-        if (saturated)
-            (*saturated)++;
-        return INT32_MAX;
+#if defined(__GNUC__)
+    return (unsigned)__builtin_clzll(v);
+#else
+    unsigned n = 0;
+    while (!(v & ((uint64_t)1 << 63))) {
+        v <<= 1;
+        n++;
     }
-    if (v < -INT32_MAX) {
-        if (saturated)
-            (*saturated)++;
-        return -INT32_MAX;
+    return n;
+#endif
+}
+
+void zs_recip_init(zs_recip *rc, int64_t d)
+{
+    uint64_t a = d < 0 ? (uint64_t)0 - (uint64_t)d : (uint64_t)d;
+    int e = (int)clz64(a) - 32; /* a * 2^e in [2^31, 2^32) */
+    if (e >= 0)
+        a <<= e;
+    else
+        a >>= -e;
+    rc->inv = (uint32_t)((((uint64_t)1 << 63) - 1u) / a); /* in (2^31, 2^32) */
+    rc->exp = e;
+    rc->neg = d < 0;
+}
+
+int64_t zs_recip_muldiv(const zs_recip *rc, int64_t num, int bits, int64_t limit)
+{
+    uint64_t n = num < 0 ? (uint64_t)0 - (uint64_t)num : (uint64_t)num, q;
+    int t = 0, sh;
+    if (n >= ((uint64_t)1 << 31)) { /* keep 31 significant bits: n * inv < 2^63 */
+        t = 33 - (int)clz64(n);
+        n >>= t;
     }
-    return (int32_t)v;
+    sh = 63 - bits - rc->exp - t; /* num * 2^bits / d = n * inv * 2^-sh */
+    if (n == 0 || sh >= 64)
+        q = 0;
+    else if (sh <= 0)
+        q = (uint64_t)limit;
+    else
+        q = (n * rc->inv) >> sh;
+    if (q > (uint64_t)limit)
+        q = (uint64_t)limit;
+    return ((num < 0) != rc->neg) ? -(int64_t)q : (int64_t)q;
 }
 
 /* Public results saturate to the full int32 range. */

@@ -16,23 +16,84 @@ typedef struct draw_ctx {
     int vertex_light;   /* lighting per vertex (Gouraud with vertex normals) */
     int vertex_color;   /* Gouraud with per-vertex colours */
     uint32_t tri_flags;
+    int fast;           /* 1: clip rows below fit int64 sums, 2: they fit int32 */
+    int64_t clip[3][3]; /* int16 position -> xc, yc, w, Q32 (scale and projection folded in) */
+    int32_t clip32[3][3]; /* the same when they fit: 32x16-bit products */
+    int64_t clip_t[3];  /* the translations, Q16 */
 } draw_ctx;
+
+static int64_t abs64(int64_t v)
+{
+    return v < 0 ? -v : v;
+}
+
+/* Folds scale and projection into the model-view rows where the products
+ * stay small enough (always, for real scenes); else the general path runs. */
+static void prepare_clip_rows(draw_ctx *c)
+{
+    const zs_renderer *r = c->r;
+    const int64_t sign[3] = {1, 1, -1}; /* w = -z_eye */
+    const int64_t proj[3] = {r->proj_sx, r->proj_sy, 65536};
+    int k, j;
+    c->fast = abs64(c->mesh->scale) < ((int64_t)1 << 30) ? 2 : 0;
+    for (k = 0; k < 3 && c->fast; k++) {
+        for (j = 0; j < 3; j++) {
+            int64_t m = zs_asr64((int64_t)c->mv.m[k][j] * proj[k] + 32768, 16) * sign[k];
+            if (abs64(m) >= ((int64_t)1 << 31)) {
+                c->fast = 0;
+                break;
+            }
+            c->clip[k][j] = m * c->mesh->scale; /* |.| < 2^61 */
+            if (abs64(c->clip[k][j]) >= ((int64_t)1 << 46))
+                c->fast = 0; /* three products of int16 must sum below 2^63 */
+            else if (abs64(c->clip[k][j]) >= ((int64_t)1 << 31))
+                c->fast = 1;
+        }
+        c->clip_t[k] = zs_asr64((int64_t)c->mv.m[k][3] * proj[k] + 32768, 16) * sign[k];
+    }
+    if (c->fast == 2)
+        for (k = 0; k < 3; k++)
+            for (j = 0; j < 3; j++)
+                c->clip32[k][j] = (int32_t)c->clip[k][j];
+}
+
+static int32_t sat_count(zs_renderer *r, int64_t v)
+{
+    return zs_sat32(v, &r->stats.saturated);
+}
 
 /* Model-space vertex i to clip space (Q16.16). */
 static void to_clip(const draw_ctx *c, uint32_t i, int32_t *xc, int32_t *yc, int32_t *w)
 {
-    zs_renderer *r = c->r;
-    const int16_t *pos = c->mesh->positions + 3u * i;
-    int32_t p[3];
-    int32_t e[3];
-    int k;
-    for (k = 0; k < 3; k++)
-        p[k] = zs_sat32((int64_t)pos[k] * c->mesh->scale, &r->stats.saturated);
-    for (k = 0; k < 3; k++)
-        e[k] = zs_sat32(zs_dot3_q16(c->mv.m[k], p) + c->mv.m[k][3], &r->stats.saturated);
-    *xc = zs_sat32(zs_asr64((int64_t)e[0] * r->proj_sx + 32768, 16), &r->stats.saturated);
-    *yc = zs_sat32(zs_asr64((int64_t)e[1] * r->proj_sy + 32768, 16), &r->stats.saturated);
-    *w = -e[2];
+    if (c->fast) {
+        const int16_t *pos = c->mesh->positions + 3u * i;
+        int64_t out[3];
+        int k;
+        for (k = 0; k < 3; k++) {
+            int64_t s;
+            if (c->fast == 2) /* multiply-accumulate into 64 bits */
+                s = (int64_t)c->clip32[k][0] * pos[0] + (int64_t)c->clip32[k][1] * pos[1] +
+                    (int64_t)c->clip32[k][2] * pos[2];
+            else
+                s = c->clip[k][0] * pos[0] + c->clip[k][1] * pos[1] + c->clip[k][2] * pos[2];
+            out[k] = zs_asr64(s + 32768, 16) + c->clip_t[k];
+        }
+        *xc = sat_count(c->r, out[0]);
+        *yc = sat_count(c->r, out[1]);
+        *w = sat_count(c->r, out[2]);
+    } else { /* general path: saturate after each stage */
+        zs_renderer *r = c->r;
+        const int16_t *pos = c->mesh->positions + 3u * i;
+        int32_t p[3], e[3];
+        int k;
+        for (k = 0; k < 3; k++)
+            p[k] = sat_count(r, (int64_t)pos[k] * c->mesh->scale);
+        for (k = 0; k < 3; k++)
+            e[k] = sat_count(r, zs_dot3_q16(c->mv.m[k], p) + c->mv.m[k][3]);
+        *xc = sat_count(r, zs_asr64((int64_t)e[0] * r->proj_sx + 32768, 16));
+        *yc = sat_count(r, zs_asr64((int64_t)e[1] * r->proj_sy + 32768, 16));
+        *w = -e[2];
+    }
 }
 
 /* Light intensity (Q16.16) for a model-space normal direction n. */
@@ -227,6 +288,7 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     c.mesh = m;
     c.model = model ? *model : zs_mat34_identity();
     c.mv = zs_mat34_mul(&r->cam.view, &c.model);
+    prepare_clip_rows(&c);
     c.lit = r->shade.light_count > 0 || r->shade.ambient != ZS_FX_ONE;
     c.vertex_light = r->shade.shading == ZS_SHADE_GOURAUD && c.lit && m->vertex_normals != 0;
     c.vertex_color = r->shade.shading == ZS_SHADE_GOURAUD && m->vertex_colors != 0;

@@ -44,6 +44,38 @@ static int fold_edge(zs_renderer *r, zs_edge *keep, uint16_t keep_i, zs_edge *du
     return 1;
 }
 
+/* Sorts edge indices by column: insertion sort for a few, else a bottom-up
+ * merge sort through tmp (a row can start hundreds of small triangles). */
+static void sort_batch(const zs_edge *edges, uint16_t *a, int n, uint16_t *tmp)
+{
+    int width, i, j;
+    if (n <= 12) {
+        for (i = 1; i < n; i++) {
+            uint16_t e = a[i];
+            int32_t x = edges[e].x;
+            for (j = i; j > 0 && edges[a[j - 1]].x > x; j--)
+                a[j] = a[j - 1];
+            a[j] = e;
+        }
+        return;
+    }
+    for (width = 1; width < n; width *= 2) {
+        for (i = 0; i < n; i += 2 * width) {
+            int mid = i + width < n ? i + width : n;
+            int end = i + 2 * width < n ? i + 2 * width : n;
+            int p = i, q = mid, k = i;
+            while (p < mid && q < end)
+                tmp[k++] = edges[a[q]].x < edges[a[p]].x ? a[q++] : a[p++];
+            while (p < mid)
+                tmp[k++] = a[p++];
+            while (q < end)
+                tmp[k++] = a[q++];
+        }
+        for (i = 0; i < n; i++)
+            a[i] = tmp[i];
+    }
+}
+
 /* Activates the triangles first met on row y; sorts, folds and merges the
  * unsorted tail (those edges plus continuations made by the last step). */
 static void add_new_edges(zs_renderer *r, int32_t y)
@@ -60,14 +92,9 @@ static void add_new_edges(zs_renderer *r, int32_t y)
     n = r->n_ael;
     if (n == sorted)
         return;
-    /* sort the batch (insertion sort: batches are small) */
-    for (i = sorted + 1; i < n; i++) {
-        uint16_t e = ael[i];
-        int32_t x = edges[e].x;
-        for (j = i; j > sorted && edges[ael[j - 1]].x > x; j--)
-            ael[j] = ael[j - 1];
-        ael[j] = e;
-    }
+    /* the free stack's unused top holds at least as many slots as there
+     * are edges in use: scratch for sorting and merging the batch */
+    sort_batch(edges, ael + sorted, n - sorted, efree + r->n_edge_free);
     /* fold shared edges: they start at the same column */
     w = sorted;
     for (i = sorted; i < n; i++) {
@@ -86,8 +113,6 @@ static void add_new_edges(zs_renderer *r, int32_t y)
     n = w;
     /* merge from the back: both runs are sorted, the list has room */
     if (sorted > 0) {
-        /* the free stack's unused top holds at least as many slots as there
-         * are edges in use, so it serves as scratch for the batch */
         uint16_t *batch = efree + r->n_edge_free;
         int nb = n - sorted;
         for (i = 0; i < nb; i++)

@@ -88,15 +88,13 @@ static uint32_t vertex_rgb(const zs_renderer *r, const zs_tri *t, const zs_vert 
 }
 
 /* Q8.16 colour gradient per pixel, clamped to 4096 levels per pixel. */
-static int32_t color_gradient(int64_t num, int64_t area2)
+static int32_t color_gradient(int64_t num, const zs_recip *area2)
 {
-    const int64_t limit = (int64_t)1 << 28;
-    int64_t g = (num * 16) / area2;
-    return (int32_t)(g > limit ? limit : (g < -limit ? -limit : g));
+    return (int32_t)zs_recip_muldiv(area2, num, 4, (int64_t)1 << 28);
 }
 
 void zs_shade_setup(const zs_renderer *r, zs_active *a, const zs_tri *t, const zs_vert *v[3],
-                    int32_t ox, int32_t oy, int64_t area2, int32_t y)
+                    int32_t ox, int32_t oy, const zs_recip *area2, int32_t y)
 {
     uint32_t c[3];
     uint8_t px[4];

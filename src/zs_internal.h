@@ -82,8 +82,19 @@ typedef char zs_check_active[(sizeof(zs_active) == ZS_ACTIVE_BYTES) ? 1 : -1];
 static inline int32_t zs_asr32(int32_t v, unsigned s);
 int64_t zs_floor_div64(int64_t a, int64_t b);       /* b > 0 */
 int64_t zs_round_div64(int64_t a, int64_t b);       /* b > 0, half up */
-int32_t zs_sat32(int64_t v, uint32_t *saturated);   /* clamp to int32, count */
+
 int32_t zs_sin_q30(zs_fixed deg);                   /* sine, Q2.30 */
+/* A divisor prepared for repeated divisions: one hardware-free 64/32 division
+ * instead of one per quotient (plane gradients share their triangle's area). */
+typedef struct zs_recip {
+    uint32_t inv;
+    int32_t exp;
+    int32_t neg;
+} zs_recip;
+void zs_recip_init(zs_recip *rc, int64_t d); /* d != 0 */
+/* num * 2^bits / d to 31 significant bits (toward zero), clamped to +-limit;
+ * for |num| < 2^62. */
+int64_t zs_recip_muldiv(const zs_recip *rc, int64_t num, int bits, int64_t limit);
 /* round(sum a[i] * b[i] / 65536) without overflow for any int32 inputs. */
 int64_t zs_dot3_q16(const int32_t a[3], const int32_t b[3]);
 /* Shrink a vector by powers of two until every |component| < limit. */
@@ -143,7 +154,7 @@ void zs_pack_pixel(zs_format fmt, uint32_t rgb, uint8_t out[4]);
 void zs_fill_gouraud(const zs_renderer *r, const zs_active *a, uint8_t *row, int x0, int x1);
 /* Sets the colour planes and flat pixel of an active triangle. */
 void zs_shade_setup(const zs_renderer *r, zs_active *a, const zs_tri *t, const zs_vert *v[3],
-                    int32_t ox, int32_t oy, int64_t area2, int32_t y);
+                    int32_t ox, int32_t oy, const zs_recip *area2, int32_t y);
 uint32_t zs_light_color(uint32_t rgb, zs_fixed intensity);
 
 /* span.c / zline.c: one row's visibility */
@@ -160,6 +171,18 @@ static inline int64_t zs_asr64(int64_t v, unsigned s)
 static inline int32_t zs_asr32(int32_t v, unsigned s)
 {
     return v < 0 ? ~(~v >> s) : v >> s;
+}
+
+/* Clamps to +-INT32_MAX (symmetric, so negation stays defined) and counts
+ * the clamps in *saturated when it is not NULL. */
+static inline int32_t zs_sat32(int64_t v, uint32_t *saturated)
+{
+    if (v > INT32_MAX || v < -INT32_MAX) {
+        if (saturated)
+            (*saturated)++;
+        return v > 0 ? INT32_MAX : -INT32_MAX;
+    }
+    return (int32_t)v;
 }
 
 static inline int32_t zs_clampi(int32_t v, int32_t lo, int32_t hi)

@@ -44,12 +44,18 @@ static int fold_edge(zs_renderer *r, zs_edge *keep, uint16_t keep_i, zs_edge *du
     return 1;
 }
 
-/* Sorts edge indices by column: insertion sort for a few, else a bottom-up
- * merge sort through tmp (a row can start hundreds of small triangles). */
-static void sort_batch(const zs_edge *edges, uint16_t *a, int n, uint16_t *tmp)
+/* Sorts edge indices by column. The keys (column, index) are packed into
+ * 32-bit words so the sort never chases pointers; it runs in the z-buffer
+ * line, which is idle while edges are added. Insertion sort for a few, a
+ * bottom-up merge sort for more (a row can start hundreds of triangles). */
+static void sort_batch(zs_renderer *r, uint16_t *a, int n)
 {
+    const zs_edge *edges = (const zs_edge *)r->edges;
+    uint32_t *key = (uint32_t *)r->zline_depth, *tmp = key + n, *src, *dst;
     int width, i, j;
-    if (n <= 12) {
+    if (n < 2)
+        return;
+    if (2 * n > 2 * (int)r->cfg.width) { /* more than the scratch holds: rare */
         for (i = 1; i < n; i++) {
             uint16_t e = a[i];
             int32_t x = edges[e].x;
@@ -59,21 +65,41 @@ static void sort_batch(const zs_edge *edges, uint16_t *a, int n, uint16_t *tmp)
         }
         return;
     }
-    for (width = 1; width < n; width *= 2) {
-        for (i = 0; i < n; i += 2 * width) {
-            int mid = i + width < n ? i + width : n;
-            int end = i + 2 * width < n ? i + 2 * width : n;
-            int p = i, q = mid, k = i;
-            while (p < mid && q < end)
-                tmp[k++] = edges[a[q]].x < edges[a[p]].x ? a[q++] : a[p++];
-            while (p < mid)
-                tmp[k++] = a[p++];
-            while (q < end)
-                tmp[k++] = a[q++];
+    /* columns are within +-2^14 of the screen: an offset makes them unsigned */
+    for (i = 0; i < n; i++)
+        key[i] = ((uint32_t)(edges[a[i]].x + 32768) << 16) | a[i];
+    if (n <= 16) {
+        for (i = 1; i < n; i++) {
+            uint32_t k = key[i];
+            for (j = i; j > 0 && key[j - 1] > k; j--)
+                key[j] = key[j - 1];
+            key[j] = k;
         }
-        for (i = 0; i < n; i++)
-            a[i] = tmp[i];
+        src = key;
+    } else {
+        src = key;
+        dst = tmp;
+        for (width = 1; width < n; width *= 2) {
+            for (i = 0; i < n; i += 2 * width) {
+                int mid = i + width < n ? i + width : n;
+                int end = i + 2 * width < n ? i + 2 * width : n;
+                int p = i, q = mid, k = i;
+                while (p < mid && q < end)
+                    dst[k++] = src[q] < src[p] ? src[q++] : src[p++];
+                while (p < mid)
+                    dst[k++] = src[p++];
+                while (q < end)
+                    dst[k++] = src[q++];
+            }
+            {
+                uint32_t *t = src;
+                src = dst;
+                dst = t;
+            }
+        }
     }
+    for (i = 0; i < n; i++)
+        a[i] = (uint16_t)(src[i] & 0xFFFFu);
 }
 
 /* Activates the triangles first met on row y; sorts, folds and merges the
@@ -92,9 +118,7 @@ static void add_new_edges(zs_renderer *r, int32_t y)
     n = r->n_ael;
     if (n == sorted)
         return;
-    /* the free stack's unused top holds at least as many slots as there
-     * are edges in use: scratch for sorting and merging the batch */
-    sort_batch(edges, ael + sorted, n - sorted, efree + r->n_edge_free);
+    sort_batch(r, ael + sorted, n - sorted);
     /* fold shared edges: they start at the same column */
     w = sorted;
     for (i = sorted; i < n; i++) {
@@ -111,7 +135,8 @@ static void add_new_edges(zs_renderer *r, int32_t y)
             ael[w++] = ael[i];
     }
     n = w;
-    /* merge from the back: both runs are sorted, the list has room */
+    /* merge from the back: both runs are sorted, the list has room; the free
+     * stack's unused top (as many slots as edges in use) holds the batch */
     if (sorted > 0) {
         uint16_t *batch = efree + r->n_edge_free;
         int nb = n - sorted;

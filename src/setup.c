@@ -83,6 +83,42 @@ static int32_t max3(int32_t a, int32_t b, int32_t c)
     return m > c ? m : c;
 }
 
+/* Is the pixel centre (px, py) (28.4) inside, by the top-left rule? The
+ * triangle a, b, c has area2 > 0: with y down its edges run clockwise, so a
+ * left edge goes up and a top edge goes right. This is the same decision as
+ * the rasterizer's ceil(x - 0.5) edges. */
+static int covers(const zs_vert *a, const zs_vert *b, const zs_vert *c, int32_t px, int32_t py)
+{
+    const zs_vert *u[3], *v[3];
+    int k;
+    u[0] = a;
+    v[0] = b;
+    u[1] = b;
+    v[1] = c;
+    u[2] = c;
+    v[2] = a;
+    for (k = 0; k < 3; k++) {
+        int64_t dx = (int64_t)v[k]->x - u[k]->x, dy = (int64_t)v[k]->y - u[k]->y;
+        int64_t w = dx * ((int64_t)py - u[k]->y) - dy * ((int64_t)px - u[k]->x);
+        if (w < 0 || (w == 0 && !(dy < 0 || (dy == 0 && dx > 0))))
+            return 0;
+    }
+    return 1;
+}
+
+/* Small triangles often fall between pixel centres (a fifth to a third of a
+ * dense mesh): test the few centres of the bounding box exactly. */
+static int covers_any(const zs_vert *a, const zs_vert *b, const zs_vert *c, int32_t row0,
+                      int32_t row1, int32_t col0, int32_t col1)
+{
+    int32_t i, j;
+    for (j = row0; j < row1; j++)
+        for (i = col0; i < col1; i++)
+            if (covers(a, c, b, 16 * i + 8, 16 * j + 8)) /* b, c swapped: area2 > 0 */
+                return 1;
+    return 0;
+}
+
 int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, uint32_t color,
                       uint16_t tag)
 {
@@ -106,7 +142,8 @@ int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, uin
     row1 = zs_clampi(zs_first_row(ymax), 0, r->cfg.height);
     col0 = zs_clampi(zs_first_row(xmin), 0, r->cfg.width);
     col1 = zs_clampi(zs_first_row(xmax), 0, r->cfg.width);
-    if (row0 >= row1 || col0 >= col1)
+    if (row0 >= row1 || col0 >= col1 ||
+        ((row1 - row0) * (col1 - col0) <= 4 && !covers_any(a, b, c, row0, row1, col0, col1)))
         return ZS_SETUP_EMPTY;
     if (r->n_tris >= r->cfg.max_triangles)
         return ZS_SETUP_DROPPED; /* capacity policy: the last triangles are dropped */

@@ -26,6 +26,8 @@ typedef struct row_ctx {
     uint16_t *set;
     uint8_t *row;
     zs_active *top;       /* nearest member, or NULL when the set is empty */
+    const zs_active *pend_top; /* span started at pend_x0, not yet written */
+    int32_t pend_x0;
     int dirty;            /* the top left: pick again before the next span */
     int32_t width;
     int32_t min_cross;    /* first column where a member overtakes the top */
@@ -93,16 +95,31 @@ static void retop(row_ctx *c, int32_t x)
     }
 }
 
-static void fill(row_ctx *c, int32_t x0, int32_t x1)
+/* Writes the pending span: [pend_x0, x) of pend_top. */
+static void flush(row_ctx *c, int32_t x)
 {
-    const zs_active *a = c->top;
+    const zs_active *a = c->pend_top;
+    int32_t x0 = c->pend_x0;
+    if (x <= x0)
+        return;
     if (!a)
-        zs_fill_flat(c->row, x0, x1, c->r->bpp, c->background);
+        zs_fill_flat(c->row, x0, x, c->r->bpp, c->background);
     else if (a->flags & ZS_ACT_GOURAUD)
-        zs_fill_gouraud(c->r, a, c->row, x0, x1);
+        zs_fill_gouraud(c->r, a, c->row, x0, x);
     else
-        zs_fill_flat(c->row, x0, x1, c->r->bpp, a->pixel);
+        zs_fill_flat(c->row, x0, x, c->r->bpp, a->pixel);
     c->r->stats.spans++;
+}
+
+/* The top from x0 on. Spans of one surface split only by events behind it
+ * (hidden triangles entering or leaving) are written as one. */
+static void fill(row_ctx *c, int32_t x0)
+{
+    if (c->top == c->pend_top)
+        return;
+    flush(c, x0);
+    c->pend_top = c->top;
+    c->pend_x0 = x0;
 }
 
 /* Columns [x0, x1) with the set unchanged: split where the top is overtaken. */
@@ -110,14 +127,13 @@ static void emit(row_ctx *c, int32_t x0, int32_t x1)
 {
     if (c->dirty)
         retop(c, x0);
+    fill(c, x0);
     while (c->top && c->min_cross < x1) {
         int32_t xc = c->min_cross;
-        fill(c, x0, xc);
         c->r->stats.crossings++;
-        x0 = xc;
         retop(c, xc);
+        fill(c, xc);
     }
-    fill(c, x0, x1);
 }
 
 static void enter(row_ctx *c, zs_active *a, uint16_t ai, int32_t x)
@@ -183,6 +199,8 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
     c.set = (uint16_t *)r->in_set;
     c.row = row;
     c.top = 0;
+    c.pend_top = 0;
+    c.pend_x0 = 0;
     c.dirty = 0;
     c.width = r->cfg.width;
     c.min_cross = NO_CROSS;
@@ -222,6 +240,7 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
     }
     if (cur < c.width)
         emit(&c, cur, c.width);
+    flush(&c, c.width);
     r->stats.depth_evals += c.evals;
     r->stats.pixels_shaded += (uint32_t)c.width;
 }

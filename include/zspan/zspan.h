@@ -291,7 +291,8 @@ typedef struct zs_stats {
     uint32_t tris_culled;      /* back-facing or zero area on screen */
     uint32_t tris_rejected;    /* wholly outside the view volume or the screen */
     uint32_t tris_clipped;     /* needed clipping (near/far/guard band) */
-    uint32_t tris_empty;       /* cover no pixel centre by their bounding box */
+    uint32_t tris_empty;       /* cover no pixel centre (bounding box, or an exact
+                                  test when the box holds at most 4 centres) */
     uint32_t tris_dropped;     /* lost to a full pool (capacity policy) */
     uint32_t tris_stored;      /* submitted triangles with at least one record */
     uint32_t records;          /* triangle records stored (pieces after clipping) */

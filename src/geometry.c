@@ -65,17 +65,22 @@ static int32_t sat_count(zs_renderer *r, int64_t v)
 /* Model-space vertex i to clip space (Q16.16). */
 static void to_clip(const draw_ctx *c, uint32_t i, int32_t *xc, int32_t *yc, int32_t *w)
 {
-    if (c->fast) {
+    if (c->fast == 2) { /* 32x16-bit products accumulated in 64 bits */
+        const int16_t *pos = c->mesh->positions + 3u * i;
+        int32_t px = pos[0], py = pos[1], pz = pos[2];
+        const int32_t *m0 = c->clip32[0], *m1 = c->clip32[1], *m2 = c->clip32[2];
+        int64_t sx = (int64_t)m0[0] * px + (int64_t)m0[1] * py + (int64_t)m0[2] * pz + 32768;
+        int64_t sy = (int64_t)m1[0] * px + (int64_t)m1[1] * py + (int64_t)m1[2] * pz + 32768;
+        int64_t sw = (int64_t)m2[0] * px + (int64_t)m2[1] * py + (int64_t)m2[2] * pz + 32768;
+        *xc = sat_count(c->r, zs_asr64(sx, 16) + c->clip_t[0]);
+        *yc = sat_count(c->r, zs_asr64(sy, 16) + c->clip_t[1]);
+        *w = sat_count(c->r, zs_asr64(sw, 16) + c->clip_t[2]);
+    } else if (c->fast) {
         const int16_t *pos = c->mesh->positions + 3u * i;
         int64_t out[3];
         int k;
         for (k = 0; k < 3; k++) {
-            int64_t s;
-            if (c->fast == 2) /* multiply-accumulate into 64 bits */
-                s = (int64_t)c->clip32[k][0] * pos[0] + (int64_t)c->clip32[k][1] * pos[1] +
-                    (int64_t)c->clip32[k][2] * pos[2];
-            else
-                s = c->clip[k][0] * pos[0] + c->clip[k][1] * pos[1] + c->clip[k][2] * pos[2];
+            int64_t s = c->clip[k][0] * pos[0] + c->clip[k][1] * pos[1] + c->clip[k][2] * pos[2];
             out[k] = zs_asr64(s + 32768, 16) + c->clip_t[k];
         }
         *xc = sat_count(c->r, out[0]);

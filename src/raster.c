@@ -236,9 +236,13 @@ static void step_edges(zs_renderer *r, int32_t y)
 
 void zs_raster_row(zs_renderer *r, int y, uint8_t *row)
 {
+    uint32_t sides;
     add_new_edges(r, y);
-    if (r->n_ael > r->stats.max_active_edges)
-        r->stats.max_active_edges = r->n_ael;
+    /* capacity demand in edge sides, two per active triangle (a shared edge
+     * record serves two sides, but each triangle needs its pair) */
+    sides = 2u * (uint32_t)(r->cfg.max_active_edges / 2u - r->n_active_free);
+    if (sides > r->stats.max_active_edges)
+        r->stats.max_active_edges = sides;
     if (row) {
         if (r->mode == ZS_MODE_ZLINE)
             zs_zline_row(r, y, row);

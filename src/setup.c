@@ -98,8 +98,9 @@ static int covers(const zs_vert *a, const zs_vert *b, const zs_vert *c, int32_t 
     u[2] = c;
     v[2] = a;
     for (k = 0; k < 3; k++) {
-        int64_t dx = (int64_t)v[k]->x - u[k]->x, dy = (int64_t)v[k]->y - u[k]->y;
-        int64_t w = dx * ((int64_t)py - u[k]->y) - dy * ((int64_t)px - u[k]->x);
+        /* callers keep every coordinate within 2^12 of the others: 32 bits */
+        int32_t dx = v[k]->x - u[k]->x, dy = v[k]->y - u[k]->y;
+        int32_t w = dx * (py - u[k]->y) - dy * (px - u[k]->x);
         if (w < 0 || (w == 0 && !(dy < 0 || (dy == 0 && dx > 0))))
             return 0;
     }
@@ -143,7 +144,8 @@ int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, uin
     col0 = zs_clampi(zs_first_row(xmin), 0, r->cfg.width);
     col1 = zs_clampi(zs_first_row(xmax), 0, r->cfg.width);
     if (row0 >= row1 || col0 >= col1 ||
-        ((row1 - row0) * (col1 - col0) <= 4 && !covers_any(a, b, c, row0, row1, col0, col1)))
+        ((row1 - row0) * (col1 - col0) <= 4 && xmax - xmin < 4096 && ymax - ymin < 4096 &&
+         !covers_any(a, b, c, row0, row1, col0, col1)))
         return ZS_SETUP_EMPTY;
     if (r->n_tris >= r->cfg.max_triangles)
         return ZS_SETUP_DROPPED; /* capacity policy: the last triangles are dropped */

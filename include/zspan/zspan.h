@@ -162,7 +162,9 @@ typedef struct zs_config {
     uint16_t width, height;       /* pixels, 1..ZS_MAX_DIM */
     uint16_t max_triangles;       /* 1..ZS_MAX_TRIANGLES */
     uint16_t max_vertices;        /* 1..ZS_MAX_VERTICES */
-    uint16_t max_active_edges;    /* 2..ZS_MAX_ACTIVE_EDGES */
+    uint16_t max_active_edges;    /* 2..ZS_MAX_ACTIVE_EDGES: two per triangle
+                                     crossing one row (edges that two
+                                     triangles share are stored once) */
 } zs_config;
 
 zs_config zs_config_default(uint16_t width, uint16_t height, uint16_t max_triangles,
@@ -303,7 +305,9 @@ typedef struct zs_stats {
     uint32_t saturated;        /* coordinates clamped to the representable range */
     uint32_t rows;             /* rows rendered */
     uint32_t spans;            /* spans written (background spans included) */
-    uint32_t max_active_edges; /* most edges active on one row */
+    uint32_t max_active_edges; /* most edge sides active on one row (2 per
+                                  triangle crossing it): the figure to size
+                                  zs_config.max_active_edges from */
     uint32_t depth_evals;      /* plane evaluations for visibility */
     uint32_t crossings;        /* penetration crossings split inside a row */
     uint32_t pixels_shaded;    /* pixel writes (== width * rows in span mode) */

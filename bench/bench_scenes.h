@@ -1,0 +1,47 @@
+/*
+ * The three standard benchmark scenes (freestanding C99: host and firmware).
+ *
+ * 240x240, RGB565 big-endian, flat unlit colours (one per triangle), back
+ * faces culled, camera at the origin looking down -Z, vertical fov 60 degrees,
+ * near 0.1, far 100; frames f = 0..9:
+ *   sphere285  T(0,0,-3) * Ry(30 + 2f)            sphereWithHole.stl, normalised
+ *   cubes      T(0,0,-8) * Rx(20) * Ry(30 + 2f)   64 unit cubes, 4x4x4, 1.5 apart
+ *   wuson      T(0,0,-3) * Ry(30 + 2f)            WusonOBJ.obj, normalised
+ *
+ * Frame checksum: FNV-1a 32 over the RGB565 big-endian bytes of all rows in
+ * order (offset basis 0x811C9DC5, prime 0x01000193).
+ */
+#ifndef ZSPAN_BENCH_SCENES_H
+#define ZSPAN_BENCH_SCENES_H
+
+#include "zspan/zspan.h"
+
+#define BENCH_W 240
+#define BENCH_H 240
+#define BENCH_FRAMES 10
+#define BENCH_SCENE_COUNT 3
+#define BENCH_FNV_BASIS 0x811C9DC5u
+
+typedef struct bench_scene {
+    const char *name;
+    const zs_mesh *mesh;
+    zs_fixed tz;          /* translation along z */
+    zs_fixed rx_deg;      /* tilt about x (applied after the spin about y) */
+    /* Pool capacities (from a host run, see bench_caps.h). */
+    uint16_t max_triangles, max_vertices, max_active_edges;
+} bench_scene;
+
+extern const bench_scene bench_scenes[BENCH_SCENE_COUNT];
+
+/* Model-view matrix of frame f. */
+zs_mat34 bench_model_view(const bench_scene *s, int frame);
+zs_config bench_config(const bench_scene *s);
+/* Camera of every scene. */
+zs_status bench_camera(zs_camera *cam);
+/* zs_frame_begin + zs_draw for frame f (the caller renders the rows). */
+zs_status bench_submit(zs_renderer *r, const zs_camera *cam, const bench_scene *s, int frame,
+                       zs_visibility mode);
+/* FNV-1a 32 of n bytes, continuing from h. */
+uint32_t bench_fnv1a(uint32_t h, const uint8_t *p, size_t n);
+
+#endif

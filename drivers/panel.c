@@ -1,0 +1,255 @@
+/* zspan panel driver: the parts shared by all command sets (geometry,
+ * rotation, windows, pixel writes) and dispatch to the DCS or SSD1351 code. */
+#include "panel_internal.h"
+
+const char *zs_panel_strerror(zs_panel_status s)
+{
+    switch (s) {
+    case ZS_PANEL_OK: return "ok";
+    case ZS_PANEL_ERR_NULL: return "NULL panel, description, bus or buffer";
+    case ZS_PANEL_ERR_IO: return "the bus reported a failure";
+    case ZS_PANEL_ERR_FORMAT: return "pixel format not supported by this panel";
+    case ZS_PANEL_ERR_ROTATION: return "rotation not 0..3";
+    case ZS_PANEL_ERR_WINDOW: return "empty window or outside the visible area";
+    case ZS_PANEL_ERR_STATE: return "panel not initialised, or pixels without an open window";
+    case ZS_PANEL_ERR_DESC: return "inconsistent panel description";
+    case ZS_PANEL_ERR_BUFFER: return "buffer too small or not whole pixels";
+    case ZS_PANEL_ERR_RENDER: return "the renderer failed (see render_status)";
+    }
+    return "unknown panel status";
+}
+
+zs_panel_status zs__panel_cmd(zs_panel *p, uint8_t cmd, const uint8_t *params, size_t n)
+{
+    return zs_bus_cmd(p->bus, cmd, params, n) == ZS_BUS_OK ? ZS_PANEL_OK : ZS_PANEL_ERR_IO;
+}
+
+zs_panel_status zs__panel_run_records(zs_panel *p, const uint8_t *rec, size_t len)
+{
+    size_t i = 0;
+    while (i < len) {
+        uint8_t cmd, n;
+        size_t np;
+        zs_panel_status s;
+        if (i + 2 > len)
+            return ZS_PANEL_ERR_DESC;
+        cmd = rec[i];
+        n = rec[i + 1];
+        np = (size_t)(n & 0x7Fu);
+        i += 2;
+        if (i + np + ((n & ZS_INIT_DELAY) ? 1u : 0u) > len)
+            return ZS_PANEL_ERR_DESC;
+        s = zs__panel_cmd(p, cmd, np ? rec + i : NULL, np);
+        if (s != ZS_PANEL_OK)
+            return s;
+        i += np;
+        if (n & ZS_INIT_DELAY)
+            zs_bus_delay(p->bus, rec[i++]);
+    }
+    return ZS_PANEL_OK;
+}
+
+unsigned zs_panel_bytes_per_pixel(const zs_panel_desc *desc, zs_format format)
+{
+    if (desc == NULL || (unsigned)format >= 8u || !(desc->formats & (1u << (unsigned)format)))
+        return 0;
+    if (format == ZS_FMT_RGB565_BE)
+        return 2;
+    if (format == ZS_FMT_RGB666)
+        return 3;
+    return 0;
+}
+
+uint8_t zs_panel_madctl_for(const zs_panel_desc *desc, unsigned rotation)
+{
+    static const uint8_t toggle[4] = {
+        0x00u,
+        (uint8_t)(ZS_MADCTL_MX | ZS_MADCTL_MV),
+        (uint8_t)(ZS_MADCTL_MX | ZS_MADCTL_MY),
+        (uint8_t)(ZS_MADCTL_MY | ZS_MADCTL_MV),
+    };
+    if (desc == NULL)
+        return 0;
+    return (uint8_t)(desc->madctl ^ toggle[rotation & 3u]);
+}
+
+zs_panel_status zs_panel_geometry(const zs_panel_desc *desc, unsigned rotation, uint16_t *width,
+                                  uint16_t *height, uint16_t *x_offset, uint16_t *y_offset)
+{
+    uint8_t m;
+    uint16_t col, row;
+
+    if (desc == NULL)
+        return ZS_PANEL_ERR_NULL;
+    if (rotation > 3u)
+        return ZS_PANEL_ERR_ROTATION;
+    if (desc->width == 0 || desc->height == 0 ||
+        (uint32_t)desc->col_offset + desc->width > desc->ram_width ||
+        (uint32_t)desc->row_offset + desc->height > desc->ram_height)
+        return ZS_PANEL_ERR_DESC;
+    m = zs_panel_madctl_for(desc, rotation);
+    /* Address of the visible area's first column/row once the controller
+     * mirrors its address counters (MX: column n is RAM column W-1-n). */
+    col = (m & ZS_MADCTL_MX)
+              ? (uint16_t)(desc->ram_width - desc->width - desc->col_offset)
+              : desc->col_offset;
+    row = (m & ZS_MADCTL_MY)
+              ? (uint16_t)(desc->ram_height - desc->height - desc->row_offset)
+              : desc->row_offset;
+    if (m & ZS_MADCTL_MV) {
+        /* Exchange: panel columns address RAM rows and panel rows RAM columns. */
+        if (width) *width = desc->height;
+        if (height) *height = desc->width;
+        if (x_offset) *x_offset = row;
+        if (y_offset) *y_offset = col;
+    } else {
+        if (width) *width = desc->width;
+        if (height) *height = desc->height;
+        if (x_offset) *x_offset = col;
+        if (y_offset) *y_offset = row;
+    }
+    return ZS_PANEL_OK;
+}
+
+static zs_panel_status apply_geometry(zs_panel *p, unsigned rotation)
+{
+    zs_panel_status s = zs_panel_geometry(p->desc, rotation, &p->width, &p->height,
+                                          &p->x_offset, &p->y_offset);
+    if (s != ZS_PANEL_OK)
+        return s;
+    p->rotation = (uint8_t)rotation;
+    p->madctl = zs_panel_madctl_for(p->desc, rotation);
+    return ZS_PANEL_OK;
+}
+
+zs_panel_status zs_panel_init(zs_panel *p, const zs_panel_desc *desc, zs_bus *bus,
+                              zs_format format, unsigned rotation)
+{
+    zs_panel_status s;
+
+    if (p == NULL || desc == NULL || bus == NULL || bus->ops == NULL)
+        return ZS_PANEL_ERR_NULL;
+    p->ready = 0;
+    p->desc = desc;
+    p->bus = bus;
+    p->inverted = 0;
+    p->use_ramwrc = 0;
+    p->window_bytes = 0;
+    p->window_total = 0;
+    if (zs_panel_bytes_per_pixel(desc, format) == 0)
+        return ZS_PANEL_ERR_FORMAT;
+    p->format = format;
+    if (desc->proto == ZS_PANEL_DCS) {
+        if ((format == ZS_FMT_RGB666 ? desc->colmod_666 : desc->colmod_565) == 0)
+            return ZS_PANEL_ERR_DESC;
+    } else if (desc->proto != ZS_PANEL_SSD1351) {
+        return ZS_PANEL_ERR_DESC;
+    }
+    if ((s = apply_geometry(p, rotation)) != ZS_PANEL_OK)
+        return s;
+    s = desc->proto == ZS_PANEL_DCS ? zs__dcs_init(p) : zs__ssd1351_init(p);
+    if (s != ZS_PANEL_OK)
+        return s;
+    p->ready = 1;
+    return ZS_PANEL_OK;
+}
+
+zs_panel_status zs_panel_set_rotation(zs_panel *p, unsigned rotation)
+{
+    zs_panel_status s;
+    if (p == NULL || p->desc == NULL)
+        return ZS_PANEL_ERR_NULL;
+    if (!p->ready)
+        return ZS_PANEL_ERR_STATE;
+    if ((s = apply_geometry(p, rotation)) != ZS_PANEL_OK)
+        return s;
+    p->window_bytes = 0;
+    return p->desc->proto == ZS_PANEL_DCS ? zs__dcs_orient(p) : zs__ssd1351_orient(p);
+}
+
+zs_panel_status zs_panel_set_inversion(zs_panel *p, int on)
+{
+    if (p == NULL || p->desc == NULL)
+        return ZS_PANEL_ERR_NULL;
+    if (!p->ready)
+        return ZS_PANEL_ERR_STATE;
+    p->inverted = on ? 1u : 0u;
+    p->window_bytes = 0;
+    return p->desc->proto == ZS_PANEL_DCS ? zs__dcs_invert(p) : zs__ssd1351_invert(p);
+}
+
+zs_panel_status zs_panel_display_on(zs_panel *p, int on)
+{
+    if (p == NULL || p->desc == NULL)
+        return ZS_PANEL_ERR_NULL;
+    if (!p->ready)
+        return ZS_PANEL_ERR_STATE;
+    p->window_bytes = 0;
+    return p->desc->proto == ZS_PANEL_DCS ? zs__dcs_display(p, on) : zs__ssd1351_display(p, on);
+}
+
+zs_panel_status zs_panel_backlight(zs_panel *p, uint8_t level)
+{
+    if (p == NULL || p->bus == NULL)
+        return ZS_PANEL_ERR_NULL;
+    zs_bus_backlight(p->bus, level);
+    return ZS_PANEL_OK;
+}
+
+zs_panel_status zs_panel_window(zs_panel *p, uint16_t x0, uint16_t y0, uint16_t x1, uint16_t y1)
+{
+    zs_panel_status s;
+    uint16_t xs, ys, xe, ye;
+
+    if (p == NULL || p->desc == NULL)
+        return ZS_PANEL_ERR_NULL;
+    if (!p->ready)
+        return ZS_PANEL_ERR_STATE;
+    if (x0 >= x1 || y0 >= y1 || x1 > p->width || y1 > p->height)
+        return ZS_PANEL_ERR_WINDOW;
+    xs = (uint16_t)(x0 + p->x_offset);
+    xe = (uint16_t)(x1 - 1u + p->x_offset);
+    ys = (uint16_t)(y0 + p->y_offset);
+    ye = (uint16_t)(y1 - 1u + p->y_offset);
+    p->window_bytes = 0;
+    s = p->desc->proto == ZS_PANEL_DCS ? zs__dcs_window(p, xs, ys, xe, ye)
+                                       : zs__ssd1351_window(p, xs, ys, xe, ye);
+    if (s != ZS_PANEL_OK)
+        return s;
+    p->window_total = (uint32_t)(x1 - x0) * (uint32_t)(y1 - y0) *
+                      zs_panel_bytes_per_pixel(p->desc, p->format);
+    p->window_bytes = p->window_total;
+    return ZS_PANEL_OK;
+}
+
+zs_panel_status zs_panel_write(zs_panel *p, uint8_t *data, size_t n)
+{
+    zs_panel_status s;
+
+    if (p == NULL || p->desc == NULL || (data == NULL && n > 0))
+        return ZS_PANEL_ERR_NULL;
+    if (!p->ready || p->window_bytes == 0 || n > p->window_bytes)
+        return ZS_PANEL_ERR_STATE;
+    if (n == 0)
+        return ZS_PANEL_OK;
+    if (p->use_ramwrc && p->desc->proto == ZS_PANEL_DCS) {
+        unsigned bpp = zs_panel_bytes_per_pixel(p->desc, p->format);
+        if (n % bpp != 0 || (p->window_total - p->window_bytes) % bpp != 0)
+            return ZS_PANEL_ERR_BUFFER;
+        if (p->window_bytes != p->window_total &&
+            (s = zs__panel_cmd(p, ZS_DCS_RAMWRC, NULL, 0)) != ZS_PANEL_OK)
+            return s;
+    }
+    if (p->desc->proto == ZS_PANEL_SSD1351 && p->format == ZS_FMT_RGB666) {
+        /* The SSD1351 takes 18-bit colour as three bytes with the value in bits
+         * 5..0; zspan's RGB666 holds it in bits 7..2. (The caller owns data:
+         * passing a buffer the bus still owns is already a contract breach.) */
+        size_t i;
+        for (i = 0; i < n; i++)
+            data[i] = (uint8_t)(data[i] >> 2);
+    }
+    if (zs_bus_pixels(p->bus, data, n) != ZS_BUS_OK)
+        return ZS_PANEL_ERR_IO;
+    p->window_bytes -= (uint32_t)n;
+    return ZS_PANEL_OK;
+}

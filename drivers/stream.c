@@ -1,0 +1,73 @@
+/* zspan frame streaming: render band k into one buffer while band k-1 is on
+ * the bus, and account for the frame's wire traffic. */
+#include "panel_internal.h"
+
+zs_panel_status zs_panel_stream(zs_panel *p, zs_renderer *r, uint8_t *buf0, uint8_t *buf1,
+                                size_t buf_bytes, int band_rows, const zs_wire_model *wire,
+                                zs_panel_frame_stats *stats)
+{
+    zs_panel_frame_stats local;
+    zs_panel_frame_stats *st = stats != NULL ? stats : &local;
+    zs_bus_counters before;
+    uint8_t *bufs[2];
+    const uint8_t *last_sent = NULL;
+    size_t stride, fit;
+    unsigned bpp;
+    int band, y, k = 0;
+    zs_panel_status s;
+
+    if (p == NULL || r == NULL || buf0 == NULL || p->bus == NULL)
+        return ZS_PANEL_ERR_NULL;
+    st->bands = 0;
+    st->wire_waits = 0;
+    st->wire_ns = 0;
+    st->bytes = 0;
+    st->render_status = ZS_OK;
+    if (!p->ready)
+        return ZS_PANEL_ERR_STATE;
+    bpp = zs_panel_bytes_per_pixel(p->desc, p->format);
+    stride = (size_t)p->width * bpp;
+    if (bpp == 0 || buf_bytes < stride || band_rows < 1)
+        return ZS_PANEL_ERR_BUFFER;
+    fit = buf_bytes / stride;
+    band = (size_t)band_rows < fit ? band_rows : (int)fit;
+    bufs[0] = buf0;
+    bufs[1] = buf1 != NULL ? buf1 : buf0;
+
+    before = p->bus->count;
+    if ((s = zs_panel_window(p, 0, 0, p->width, p->height)) != ZS_PANEL_OK)
+        return s;
+    for (y = 0; y < (int)p->height; y += band) {
+        int rows = (int)p->height - y < band ? (int)p->height - y : band;
+        uint8_t *b = bufs[k & 1];
+        size_t n = (size_t)rows * stride;
+        zs_status rs;
+
+        /* At most one transfer is in flight: the previous band. Only when it
+         * lives in the buffer we are about to render into must we wait. */
+        if (b == last_sent && !zs_bus_idle(p->bus)) {
+            st->wire_waits++;
+            zs_bus_wait(p->bus);
+        }
+        rs = zs_render_rows(r, y, rows, b, stride);
+        st->render_status = rs;
+        if (rs != ZS_OK) {
+            zs_bus_wait(p->bus);
+            return ZS_PANEL_ERR_RENDER;
+        }
+        if (b != last_sent && !zs_bus_idle(p->bus))
+            st->wire_waits++; /* band ready before the wire was free */
+        if ((s = zs_panel_write(p, b, n)) != ZS_PANEL_OK) {
+            zs_bus_wait(p->bus);
+            return s;
+        }
+        last_sent = b;
+        st->bands++;
+        k++;
+    }
+    zs_bus_wait(p->bus);
+    st->bus = zs_bus_counters_diff(&p->bus->count, &before);
+    st->bytes = zs_bus_counters_bytes(&st->bus);
+    st->wire_ns = wire != NULL ? zs_wire_time_ns(&st->bus, wire) : 0;
+    return ZS_PANEL_OK;
+}

@@ -1,0 +1,458 @@
+/* zspan-sim: assimp mesh loading and quantisation (host only). */
+#include "mesh_load.h"
+
+#include <assimp/cimport.h>
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define CHUNK_MAX 65535u
+
+static void chunk_free(sim_chunk *c)
+{
+    free(c->pos);
+    free(c->nrm);
+    free(c->vcol);
+    free(c->idx);
+    free(c->qpos);
+    free(c->qnrm);
+    free(c->fcol);
+    memset(c, 0, sizeof *c);
+}
+
+void sim_scene_free(sim_scene *scene)
+{
+    size_t i;
+
+    for (i = 0; i < scene->count; i++)
+        chunk_free(&scene->chunks[i]);
+    free(scene->chunks);
+    memset(scene, 0, sizeof *scene);
+}
+
+static sim_chunk *scene_new_chunk(sim_scene *scene)
+{
+    sim_chunk *c;
+
+    if (scene->count == scene->cap) {
+        size_t cap = scene->cap ? scene->cap * 2 : 8;
+        sim_chunk *p = realloc(scene->chunks, cap * sizeof *p);
+        if (p == NULL)
+            return NULL;
+        scene->chunks = p;
+        scene->cap = cap;
+    }
+    c = &scene->chunks[scene->count++];
+    memset(c, 0, sizeof *c);
+    return c;
+}
+
+/* Global node transform as a 3x4 affine matrix (row-major). */
+typedef struct affine {
+    double m[3][4];
+} affine;
+
+static affine affine_from_ai(const struct aiMatrix4x4 *a)
+{
+    affine r;
+
+    r.m[0][0] = a->a1; r.m[0][1] = a->a2; r.m[0][2] = a->a3; r.m[0][3] = a->a4;
+    r.m[1][0] = a->b1; r.m[1][1] = a->b2; r.m[1][2] = a->b3; r.m[1][3] = a->b4;
+    r.m[2][0] = a->c1; r.m[2][1] = a->c2; r.m[2][2] = a->c3; r.m[2][3] = a->c4;
+    return r;
+}
+
+/* a * b (apply b first). */
+static affine affine_mul(const affine *a, const affine *b)
+{
+    affine r;
+    int i, j;
+
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 4; j++) {
+            double v = a->m[i][0] * b->m[0][j] + a->m[i][1] * b->m[1][j] +
+                       a->m[i][2] * b->m[2][j];
+            if (j == 3)
+                v += a->m[i][3];
+            r.m[i][j] = v;
+        }
+    }
+    return r;
+}
+
+static double affine_det(const affine *a)
+{
+    const double(*m)[4] = a->m;
+
+    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+/* Cofactor matrix of the 3x3 part (= det * inverse transpose): maps normals. */
+static void affine_cofactor(const affine *a, double c[3][3])
+{
+    const double(*m)[4] = a->m;
+
+    c[0][0] = m[1][1] * m[2][2] - m[1][2] * m[2][1];
+    c[0][1] = m[1][2] * m[2][0] - m[1][0] * m[2][2];
+    c[0][2] = m[1][0] * m[2][1] - m[1][1] * m[2][0];
+    c[1][0] = m[0][2] * m[2][1] - m[0][1] * m[2][2];
+    c[1][1] = m[0][0] * m[2][2] - m[0][2] * m[2][0];
+    c[1][2] = m[0][1] * m[2][0] - m[0][0] * m[2][1];
+    c[2][0] = m[0][1] * m[1][2] - m[0][2] * m[1][1];
+    c[2][1] = m[0][2] * m[1][0] - m[0][0] * m[1][2];
+    c[2][2] = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+}
+
+static zs_color color_from_ai(const struct aiColor4D *c)
+{
+    double ch[3];
+    unsigned v[3];
+    int k;
+
+    ch[0] = c->r;
+    ch[1] = c->g;
+    ch[2] = c->b;
+    for (k = 0; k < 3; k++) {
+        double x = ch[k];
+        if (!(x > 0.0))
+            x = 0.0;
+        if (x > 1.0)
+            x = 1.0;
+        v[k] = (unsigned)floor(x * 255.0 + 0.5);
+    }
+    return ZS_RGB(v[0], v[1], v[2]);
+}
+
+typedef struct load_ctx {
+    sim_scene *scene;
+    const struct aiScene *ai;
+    const char *path;
+    int want_normals;
+    int32_t *remap;       /* per source vertex: index in the current chunk or -1 */
+    size_t remap_cap;
+} load_ctx;
+
+static int chunk_alloc(sim_chunk *c, uint32_t max_v, uint32_t max_t, int normals, int colors)
+{
+    c->pos = malloc((size_t)max_v * 3 * sizeof *c->pos);
+    c->idx = malloc((size_t)max_t * 3 * sizeof *c->idx);
+    if (normals)
+        c->nrm = malloc((size_t)max_v * 3 * sizeof *c->nrm);
+    if (colors)
+        c->vcol = malloc((size_t)max_v * sizeof *c->vcol);
+    return c->pos != NULL && c->idx != NULL && (!normals || c->nrm != NULL) &&
+                   (!colors || c->vcol != NULL)
+               ? 0
+               : -1;
+}
+
+static int add_mesh(load_ctx *lc, const struct aiMesh *m, const affine *xf)
+{
+    const int normals = lc->want_normals && m->mNormals != NULL;
+    const int colors = m->mColors[0] != NULL;
+    const double det = affine_det(xf);
+    const int flip = det < 0.0;
+    double cof[3][3];
+    int has_mat = 0;
+    zs_color mat_color = 0;
+    uint32_t f, nv = m->mNumVertices, max_v, max_t;
+    sim_chunk *c = NULL;
+    size_t k;
+
+    affine_cofactor(xf, cof);
+    if (m->mMaterialIndex < lc->ai->mNumMaterials) {
+        const struct aiMaterial *mat = lc->ai->mMaterials[m->mMaterialIndex];
+        struct aiString name;
+        struct aiColor4D diffuse;
+        int is_default = 0;
+        if (aiGetMaterialString(mat, AI_MATKEY_NAME, &name) == aiReturn_SUCCESS)
+            is_default = strcmp(name.data, AI_DEFAULT_MATERIAL_NAME) == 0;
+        if (!is_default &&
+            aiGetMaterialColor(mat, AI_MATKEY_COLOR_DIFFUSE, &diffuse) == aiReturn_SUCCESS) {
+            has_mat = 1;
+            mat_color = color_from_ai(&diffuse);
+        }
+    }
+    if ((size_t)nv > lc->remap_cap) {
+        int32_t *p = realloc(lc->remap, (size_t)nv * sizeof *p);
+        if (p == NULL)
+            goto oom;
+        lc->remap = p;
+        lc->remap_cap = nv;
+    }
+    for (k = 0; k < nv; k++)
+        lc->remap[k] = -1;
+    max_v = nv < CHUNK_MAX ? nv : CHUNK_MAX;
+    max_t = m->mNumFaces < CHUNK_MAX ? m->mNumFaces : CHUNK_MAX;
+
+    for (f = 0; f < m->mNumFaces; f++) {
+        const struct aiFace *face = &m->mFaces[f];
+        unsigned need = 0, j;
+        uint16_t tri[3];
+
+        if (face->mNumIndices != 3)
+            continue; /* points and lines */
+        for (j = 0; j < 3; j++) {
+            if (face->mIndices[j] >= nv) {
+                fprintf(stderr, "zspan-sim: %s: face %u has a bad vertex index\n", lc->path,
+                        (unsigned)f);
+                return -1;
+            }
+            if (c == NULL || lc->remap[face->mIndices[j]] < 0)
+                need++;
+        }
+        if (c == NULL || c->vcount + need > CHUNK_MAX || c->tcount + 1 > CHUNK_MAX) {
+            if (c != NULL) {
+                /* Start a new chunk: forget the current chunk's vertices. */
+                for (k = 0; k < nv; k++)
+                    lc->remap[k] = -1;
+            }
+            c = scene_new_chunk(lc->scene);
+            if (c == NULL || chunk_alloc(c, max_v, max_t, normals, colors) != 0)
+                goto oom;
+            c->first_tri = lc->scene->total_tris;
+            c->has_material_color = has_mat;
+            c->material_color = mat_color;
+        }
+        for (j = 0; j < 3; j++) {
+            unsigned src = face->mIndices[j];
+            if (lc->remap[src] < 0) {
+                const struct aiVector3D *v = &m->mVertices[src];
+                uint32_t d = c->vcount++;
+                lc->scene->total_verts++;
+                double p[3];
+                int a;
+                for (a = 0; a < 3; a++) {
+                    p[a] = xf->m[a][0] * v->x + xf->m[a][1] * v->y + xf->m[a][2] * v->z +
+                           xf->m[a][3];
+                    if (!isfinite(p[a])) {
+                        fprintf(stderr, "zspan-sim: %s: vertex %u is not finite\n", lc->path,
+                                src);
+                        return -1;
+                    }
+                    c->pos[3 * d + (uint32_t)a] = p[a];
+                }
+                if (normals) {
+                    const struct aiVector3D *n = &m->mNormals[src];
+                    double q[3], len;
+                    for (a = 0; a < 3; a++)
+                        q[a] = (cof[a][0] * n->x + cof[a][1] * n->y + cof[a][2] * n->z) *
+                               (flip ? -1.0 : 1.0);
+                    len = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+                    for (a = 0; a < 3; a++)
+                        c->nrm[3 * d + (uint32_t)a] =
+                            (len > 0.0 && isfinite(len)) ? q[a] / len : 0.0;
+                }
+                if (colors)
+                    c->vcol[d] = color_from_ai(&m->mColors[0][src]);
+                lc->remap[src] = (int32_t)d;
+            }
+            tri[j] = (uint16_t)lc->remap[src];
+        }
+        if (flip) {
+            /* A mirroring node transform turns the winding over: keep fronts in front. */
+            uint16_t t = tri[1];
+            tri[1] = tri[2];
+            tri[2] = t;
+        }
+        c->idx[3 * c->tcount + 0] = tri[0];
+        c->idx[3 * c->tcount + 1] = tri[1];
+        c->idx[3 * c->tcount + 2] = tri[2];
+        c->tcount++;
+        lc->scene->total_tris++;
+    }
+    return 0;
+oom:
+    fprintf(stderr, "zspan-sim: %s: out of memory\n", lc->path);
+    return -1;
+}
+
+static int add_node(load_ctx *lc, const struct aiNode *node, const affine *parent)
+{
+    affine local = affine_from_ai(&node->mTransformation);
+    affine global = affine_mul(parent, &local);
+    unsigned i;
+
+    for (i = 0; i < node->mNumMeshes; i++) {
+        unsigned mi = node->mMeshes[i];
+        if (mi >= lc->ai->mNumMeshes)
+            continue;
+        if (add_mesh(lc, lc->ai->mMeshes[mi], &global) != 0)
+            return -1;
+    }
+    for (i = 0; i < node->mNumChildren; i++) {
+        if (add_node(lc, node->mChildren[i], &global) != 0)
+            return -1;
+    }
+    return 0;
+}
+
+int sim_scene_load(sim_scene *scene, const char *path, int want_normals)
+{
+    const struct aiScene *ai;
+    unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices;
+    load_ctx lc;
+    affine identity;
+    uint32_t before = scene->total_tris;
+    FILE *probe;
+    int rc, i, j;
+
+    probe = fopen(path, "rb");
+    if (probe == NULL) {
+        fprintf(stderr, "zspan-sim: cannot open %s: %s\n", path, strerror(errno));
+        return -1;
+    }
+    fclose(probe);
+    if (want_normals)
+        flags |= aiProcess_GenSmoothNormals;
+    if (want_normals > 1)
+        flags |= aiProcess_ForceGenNormals; /* replace the file's normals by smooth ones */
+    ai = aiImportFile(path, flags);
+    if (ai == NULL) {
+        fprintf(stderr, "zspan-sim: cannot load %s: %s\n", path, aiGetErrorString());
+        return -1;
+    }
+    if ((ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || ai->mRootNode == NULL) {
+        fprintf(stderr, "zspan-sim: %s: incomplete scene (no meshes?)\n", path);
+        aiReleaseImport(ai);
+        return -1;
+    }
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 4; j++)
+            identity.m[i][j] = i == j ? 1.0 : 0.0;
+    lc.scene = scene;
+    lc.ai = ai;
+    lc.path = path;
+    lc.want_normals = want_normals;
+    lc.remap = NULL;
+    lc.remap_cap = 0;
+    rc = add_node(&lc, ai->mRootNode, &identity);
+    free(lc.remap);
+    aiReleaseImport(ai);
+    if (rc == 0 && scene->total_tris == before)
+        fprintf(stderr, "zspan-sim: warning: %s has no triangles\n", path);
+    return rc;
+}
+
+int sim_scene_bounds(const sim_scene *scene, double lo[3], double hi[3])
+{
+    size_t i;
+    uint32_t v;
+    int a, any = 0;
+
+    for (i = 0; i < scene->count; i++) {
+        const sim_chunk *c = &scene->chunks[i];
+        for (v = 0; v < c->vcount; v++) {
+            for (a = 0; a < 3; a++) {
+                double x = c->pos[3 * v + (uint32_t)a];
+                if (!any || x < lo[a])
+                    lo[a] = x;
+                if (!any || x > hi[a])
+                    hi[a] = x;
+            }
+            any = 1;
+        }
+    }
+    return any;
+}
+
+void sim_scene_transform(sim_scene *scene, const double centre[3], double factor)
+{
+    size_t i;
+    uint32_t v;
+    int a;
+
+    for (i = 0; i < scene->count; i++) {
+        sim_chunk *c = &scene->chunks[i];
+        for (v = 0; v < c->vcount; v++)
+            for (a = 0; a < 3; a++)
+                c->pos[3 * v + (uint32_t)a] = (c->pos[3 * v + (uint32_t)a] - centre[a]) * factor;
+    }
+}
+
+double sim_scene_radius(const sim_scene *scene, const double c[3])
+{
+    double best = 0.0;
+    size_t i;
+    uint32_t v;
+
+    for (i = 0; i < scene->count; i++) {
+        const sim_chunk *ch = &scene->chunks[i];
+        for (v = 0; v < ch->vcount; v++) {
+            const double *p = &ch->pos[3 * v];
+            double dx = p[0] - c[0], dy = p[1] - c[1], dz = p[2] - c[2];
+            double d = sqrt(dx * dx + dy * dy + dz * dz);
+            if (d > best)
+                best = d;
+        }
+    }
+    return best;
+}
+
+static int16_t clamp16(double v, double lim)
+{
+    if (v > lim)
+        v = lim;
+    if (v < -lim)
+        v = -lim;
+    return (int16_t)v;
+}
+
+int sim_scene_quantize(sim_scene *scene)
+{
+    size_t i;
+    uint32_t k, n;
+
+    for (i = 0; i < scene->count; i++) {
+        sim_chunk *c = &scene->chunks[i];
+        double maxabs = 0.0, scale;
+
+        n = c->vcount * 3;
+        for (k = 0; k < n; k++)
+            if (fabs(c->pos[k]) > maxabs)
+                maxabs = fabs(c->pos[k]);
+        if (maxabs > 32767.0) {
+            fprintf(stderr,
+                    "zspan-sim: a mesh reaches %g units from the origin; model coordinates must "
+                    "stay within +-32767 (use --fit)\n",
+                    maxabs);
+            return -1;
+        }
+        /* Finest step (scale / 65536) that keeps every coordinate within int16. */
+        scale = ceil(maxabs * 65536.0 / 32767.0);
+        if (scale < 1.0)
+            scale = 1.0;
+        c->qpos = malloc((size_t)(n ? n : 1) * sizeof *c->qpos);
+        if (c->qpos == NULL)
+            goto oom;
+        for (k = 0; k < n; k++)
+            c->qpos[k] = clamp16(floor(c->pos[k] * 65536.0 / scale + 0.5), 32767.0);
+        if (c->nrm != NULL) {
+            c->qnrm = malloc((size_t)(n ? n : 1) * sizeof *c->qnrm);
+            if (c->qnrm == NULL)
+                goto oom;
+            for (k = 0; k < n; k++)
+                c->qnrm[k] = clamp16(floor(c->nrm[k] * 16384.0 + 0.5), 16384.0);
+        }
+        memset(&c->mesh, 0, sizeof c->mesh);
+        c->mesh.positions = c->qpos;
+        c->mesh.indices = c->idx;
+        c->mesh.vertex_normals = c->qnrm;
+        c->mesh.vertex_colors = c->vcol;
+        c->mesh.scale = (zs_fixed)scale;
+        c->mesh.vertex_count = (uint16_t)c->vcount;
+        c->mesh.triangle_count = (uint16_t)c->tcount;
+        c->mesh.color = c->has_material_color ? c->material_color : ZS_RGB(200, 200, 200);
+    }
+    return 0;
+oom:
+    fprintf(stderr, "zspan-sim: out of memory\n");
+    return -1;
+}

@@ -1,0 +1,64 @@
+/*
+ * zspan-sim: loading meshes with assimp and quantising them into zs_mesh
+ * records (int16 positions with a per-mesh Q16.16 scale). Host only.
+ */
+#ifndef ZSPAN_SIM_MESH_LOAD_H
+#define ZSPAN_SIM_MESH_LOAD_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "zspan/zspan.h"
+
+/* One piece of a loaded mesh, at most 65535 vertices and 65535 triangles, so
+ * it becomes one zs_mesh. World coordinates (node transforms applied). */
+typedef struct sim_chunk {
+    double *pos;          /* 3 per vertex */
+    double *nrm;          /* 3 per vertex (unit), or NULL */
+    zs_color *vcol;       /* 1 per vertex, or NULL */
+    uint16_t *idx;        /* 3 per triangle, counter-clockwise front */
+    uint32_t vcount, tcount;
+    uint32_t first_tri;   /* index of the first triangle in the whole scene (0-based) */
+    int has_material_color;
+    zs_color material_color;
+
+    /* Filled by sim_scene_quantize. */
+    int16_t *qpos;
+    int16_t *qnrm;
+    zs_color *fcol;       /* per-face colours chosen by the caller, or NULL */
+    zs_mesh mesh;
+} sim_chunk;
+
+typedef struct sim_scene {
+    sim_chunk *chunks;
+    size_t count, cap;
+    uint32_t total_tris;  /* triangles over all chunks (the tags run 1..total_tris) */
+    uint32_t total_verts;
+} sim_scene;
+
+/* Loads a file with assimp (triangulated, identical vertices joined; points
+ * and lines are skipped) and appends its triangles to the scene, in the order
+ * of the node hierarchy (depth first), each node's meshes in order, faces in
+ * file order. want_normals: 0 none, 1 the file's normals (generated smooth if
+ * absent), 2 smooth normals generated even when the file has its own.
+ * Returns 0, or -1 with a message on stderr. */
+int sim_scene_load(sim_scene *scene, const char *path, int want_normals);
+
+/* Axis-aligned bounds over every triangle vertex. Returns 0 when empty. */
+int sim_scene_bounds(const sim_scene *scene, double lo[3], double hi[3]);
+
+/* p = (p - centre) * factor for every vertex. */
+void sim_scene_transform(sim_scene *scene, const double centre[3], double factor);
+
+/* Largest distance of a vertex from c. */
+double sim_scene_radius(const sim_scene *scene, const double c[3]);
+
+/* Quantises every chunk: scale = the smallest Q16.16 value s with
+ * max|coordinate| <= 32767 * s / 65536, positions rounded to nearest;
+ * normals to Q1.14. Fills chunk->mesh (colours are left to the caller).
+ * Returns 0, or -1 with a message (coordinates beyond +-32767 units). */
+int sim_scene_quantize(sim_scene *scene);
+
+void sim_scene_free(sim_scene *scene);
+
+#endif /* ZSPAN_SIM_MESH_LOAD_H */

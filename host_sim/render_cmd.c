@@ -1,0 +1,586 @@
+/* zspan-sim render: meshes from files (assimp) -> PNG through the core. */
+#include "sim.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mesh_load.h"
+#include "png_out.h"
+
+enum { SHADE_FLAT, SHADE_GOURAUD, SHADE_IDS };
+
+typedef struct render_opts {
+    const char **files;
+    int nfiles;
+    int width, height;
+    double fov, near_z, far_z;
+    double eye[3], target[3], up[3];
+    double rot[3];
+    int has_rot;
+    int fit;
+    int smooth;
+    zs_visibility mode;
+    int shade;
+    const char *out;
+    const char *dump;
+    zs_color background;
+    int has_light;
+    double light[4];
+    int has_ambient;
+    double ambient;
+    int unlit;
+    int fog;
+    double fog_start, fog_end;
+    zs_color fog_color;
+    long band;
+    long max_tris, max_verts, max_edges;
+    int quiet;
+} render_opts;
+
+static void opts_default(render_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    o->width = 240;
+    o->height = 240;
+    o->fov = 60.0;
+    o->near_z = 0.1;
+    o->far_z = 100.0;
+    o->eye[2] = 3.0;
+    o->up[1] = 1.0;
+    o->mode = ZS_MODE_SPAN;
+    o->shade = SHADE_FLAT;
+    o->out = "out/render.png";
+    o->background = 0;
+    o->band = 1;
+}
+
+static int parse_fog(const char *s, render_opts *o)
+{
+    char buf[128];
+    char *c1, *c2;
+
+    if (strlen(s) >= sizeof buf)
+        goto bad;
+    strcpy(buf, s);
+    c1 = strchr(buf, ',');
+    if (c1 == NULL)
+        goto bad;
+    c2 = strchr(c1 + 1, ',');
+    if (c2 == NULL)
+        goto bad;
+    *c1 = '\0';
+    *c2 = '\0';
+    if (sim_parse_double("--fog", buf, &o->fog_start) != 0 ||
+        sim_parse_double("--fog", c1 + 1, &o->fog_end) != 0 ||
+        sim_parse_color("--fog", c2 + 1, &o->fog_color) != 0)
+        return -1;
+    o->fog = 1;
+    return 0;
+bad:
+    fprintf(stderr, "zspan-sim: --fog: expected start,end,RRGGBB, got '%s'\n", s);
+    return -1;
+}
+
+static int count_commas(const char *s)
+{
+    int n = 0;
+
+    for (; *s != '\0'; s++)
+        n += *s == ',';
+    return n;
+}
+
+/* Returns 0, or SIM_EXIT_USAGE after printing a message. */
+static int parse_args(int argc, char **argv, render_opts *o)
+{
+    int i, only_files = 0;
+
+    o->files = malloc((size_t)argc * sizeof *o->files);
+    if (o->files == NULL) {
+        fprintf(stderr, "zspan-sim: out of memory\n");
+        return SIM_EXIT_FAIL;
+    }
+    for (i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *v = NULL;
+        int m;
+
+        if (only_files || a[0] != '-' || a[1] == '\0') {
+            o->files[o->nfiles++] = a;
+            continue;
+        }
+        if (strcmp(a, "--") == 0) {
+            only_files = 1;
+            continue;
+        }
+        if (strcmp(a, "--fit") == 0) {
+            o->fit = 1;
+            continue;
+        }
+        if (strcmp(a, "--smooth") == 0) {
+            o->smooth = 1;
+            continue;
+        }
+        if (strcmp(a, "--unlit") == 0) {
+            o->unlit = 1;
+            continue;
+        }
+        if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0) {
+            o->quiet = 1;
+            continue;
+        }
+#define OPT(name) ((m = sim_opt_value(argc, argv, &i, name, &v)) != 0)
+        if (OPT("--size")) {
+            if (m < 0 || sim_parse_size("--size", v, &o->width, &o->height) != 0)
+                return SIM_EXIT_USAGE;
+        } else if (OPT("--fov")) {
+            if (m < 0 || sim_parse_double("--fov", v, &o->fov) != 0)
+                return SIM_EXIT_USAGE;
+        } else if (OPT("--near")) {
+            if (m < 0 || sim_parse_double("--near", v, &o->near_z) != 0)
+                return SIM_EXIT_USAGE;
+        } else if (OPT("--far")) {
+            if (m < 0 || sim_parse_double("--far", v, &o->far_z) != 0)
+                return SIM_EXIT_USAGE;
+        } else if (OPT("--eye")) {
+            if (m < 0 || sim_parse_doubles("--eye", v, o->eye, 3) != 0)
+                return SIM_EXIT_USAGE;
+        } else if (OPT("--target")) {
+            if (m < 0 || sim_parse_doubles("--target", v, o->target, 3) != 0)
+                return SIM_EXIT_USAGE;
+        } else if (OPT("--up")) {
+            if (m < 0 || sim_parse_doubles("--up", v, o->up, 3) != 0)
+                return SIM_EXIT_USAGE;
+        } else if (OPT("--rotate")) {
+            if (m < 0 || sim_parse_doubles("--rotate", v, o->rot, 3) != 0)
+                return SIM_EXIT_USAGE;
+            o->has_rot = 1;
+        } else if (OPT("--mode")) {
+            if (m < 0)
+                return SIM_EXIT_USAGE;
+            if (strcmp(v, "span") == 0) {
+                o->mode = ZS_MODE_SPAN;
+            } else if (strcmp(v, "zline") == 0) {
+                o->mode = ZS_MODE_ZLINE;
+            } else {
+                fprintf(stderr, "zspan-sim: --mode: '%s' is not span or zline\n", v);
+                return SIM_EXIT_USAGE;
+            }
+        } else if (OPT("--shade")) {
+            if (m < 0)
+                return SIM_EXIT_USAGE;
+            if (strcmp(v, "flat") == 0) {
+                o->shade = SHADE_FLAT;
+            } else if (strcmp(v, "gouraud") == 0) {
+                o->shade = SHADE_GOURAUD;
+            } else if (strcmp(v, "ids") == 0) {
+                o->shade = SHADE_IDS;
+            } else {
+                fprintf(stderr, "zspan-sim: --shade: '%s' is not flat, gouraud or ids\n", v);
+                return SIM_EXIT_USAGE;
+            }
+        } else if (OPT("--out")) {
+            if (m < 0)
+                return SIM_EXIT_USAGE;
+            o->out = v;
+        } else if (OPT("--dump-tris")) {
+            if (m < 0)
+                return SIM_EXIT_USAGE;
+            o->dump = v;
+        } else if (OPT("--background")) {
+            if (m < 0 || sim_parse_color("--background", v, &o->background) != 0)
+                return SIM_EXIT_USAGE;
+        } else if (OPT("--light")) {
+            if (m < 0)
+                return SIM_EXIT_USAGE;
+            o->light[3] = 0.7;
+            if (sim_parse_doubles("--light", v, o->light, count_commas(v) == 3 ? 4 : 3) != 0)
+                return SIM_EXIT_USAGE;
+            o->has_light = 1;
+        } else if (OPT("--ambient")) {
+            if (m < 0 || sim_parse_double("--ambient", v, &o->ambient) != 0)
+                return SIM_EXIT_USAGE;
+            o->has_ambient = 1;
+        } else if (OPT("--fog")) {
+            if (m < 0 || parse_fog(v, o) != 0)
+                return SIM_EXIT_USAGE;
+        } else if (OPT("--band")) {
+            if (m < 0 || sim_parse_long("--band", v, 1, ZS_MAX_DIM, &o->band) != 0)
+                return SIM_EXIT_USAGE;
+        } else if (OPT("--max-tris")) {
+            if (m < 0 || sim_parse_long("--max-tris", v, 1, ZS_MAX_TRIANGLES, &o->max_tris) != 0)
+                return SIM_EXIT_USAGE;
+        } else if (OPT("--max-verts")) {
+            if (m < 0 ||
+                sim_parse_long("--max-verts", v, 1, ZS_MAX_VERTICES, &o->max_verts) != 0)
+                return SIM_EXIT_USAGE;
+        } else if (OPT("--max-edges")) {
+            if (m < 0 ||
+                sim_parse_long("--max-edges", v, 2, ZS_MAX_ACTIVE_EDGES, &o->max_edges) != 0)
+                return SIM_EXIT_USAGE;
+        } else {
+            fprintf(stderr, "zspan-sim: render: unknown option '%s' (see zspan-sim --help)\n",
+                    a);
+            return SIM_EXIT_USAGE;
+        }
+#undef OPT
+    }
+    if (o->nfiles == 0) {
+        fprintf(stderr, "zspan-sim: render: no mesh file given (see zspan-sim --help)\n");
+        return SIM_EXIT_USAGE;
+    }
+    return 0;
+}
+
+/* A pleasant, deterministic colour for triangle number n (0-based). */
+static zs_color palette_color(uint32_t n)
+{
+    static const zs_color base[12] = {
+        ZS_RGB(230, 80, 70),  ZS_RGB(240, 160, 50), ZS_RGB(230, 220, 70),
+        ZS_RGB(120, 200, 80), ZS_RGB(60, 180, 150), ZS_RGB(70, 170, 230),
+        ZS_RGB(90, 110, 230), ZS_RGB(160, 90, 220), ZS_RGB(220, 90, 180),
+        ZS_RGB(200, 200, 200), ZS_RGB(150, 120, 90), ZS_RGB(110, 150, 110),
+    };
+    uint32_t h = n * 2654435761u;
+    zs_color c = base[(h >> 16) % 12u];
+    int shift = (int)((h >> 8) & 31u) - 16; /* +-16 per channel for variety */
+    uint32_t r = (c >> 16) & 255u, g = (c >> 8) & 255u, b = c & 255u;
+    int rr = (int)r + shift, gg = (int)g + shift, bb = (int)b + shift;
+
+    rr = rr < 0 ? 0 : rr > 255 ? 255 : rr;
+    gg = gg < 0 ? 0 : gg > 255 ? 255 : gg;
+    bb = bb < 0 ? 0 : bb > 255 ? 255 : bb;
+    return ZS_RGB(rr, gg, bb);
+}
+
+static void dump_hook(void *user, uint16_t tag, const int32_t xy[6], const uint32_t z[3])
+{
+    FILE *f = user;
+    int k;
+
+    fprintf(f, "%u", (unsigned)tag);
+    for (k = 0; k < 3; k++)
+        fprintf(f, " %.4f %.4f %.17g", (double)xy[2 * k] / 16.0, (double)xy[2 * k + 1] / 16.0,
+                (double)z[k] / 1073741824.0);
+    fputc('\n', f);
+}
+
+static void normalize3(double v[3])
+{
+    double len = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+
+    if (len > 0.0) {
+        v[0] /= len;
+        v[1] /= len;
+        v[2] /= len;
+    }
+}
+
+/* Default light: from over the viewer's left shoulder. */
+static void default_light(const render_opts *o, double out[3])
+{
+    double f[3], u[3], r[3], d;
+    int a;
+
+    for (a = 0; a < 3; a++) {
+        f[a] = o->eye[a] - o->target[a];
+        u[a] = o->up[a];
+    }
+    normalize3(f);
+    d = u[0] * f[0] + u[1] * f[1] + u[2] * f[2];
+    for (a = 0; a < 3; a++)
+        u[a] -= d * f[a];
+    normalize3(u);
+    r[0] = u[1] * f[2] - u[2] * f[1];
+    r[1] = u[2] * f[0] - u[0] * f[2];
+    r[2] = u[0] * f[1] - u[1] * f[0];
+    for (a = 0; a < 3; a++)
+        out[a] = f[a] + 0.7 * u[a] - 0.5 * r[a];
+    normalize3(out);
+}
+
+static int vec_to_fixed(const char *what, const double v[3], zs_vec3 *out)
+{
+    zs_fixed x, y, z;
+
+    if (sim_to_fixed(what, v[0], &x) != 0 || sim_to_fixed(what, v[1], &y) != 0 ||
+        sim_to_fixed(what, v[2], &z) != 0)
+        return -1;
+    *out = zs_vec3_make(x, y, z);
+    return 0;
+}
+
+static int core_error(const char *call, zs_status st)
+{
+    fprintf(stderr, "zspan-sim: %s: %s (status %d)\n", call, zs_strerror(st), (int)st);
+    return SIM_EXIT_FAIL;
+}
+
+int sim_cmd_render(int argc, char **argv)
+{
+    render_opts o;
+    sim_scene scene;
+    zs_renderer r;
+    zs_camera cam;
+    zs_config cfg;
+    zs_shade_params sp;
+    zs_mat34 model, *model_ptr = NULL;
+    zs_vec3 eye, target, up;
+    zs_fixed fov, near_z, far_z;
+    zs_status st;
+    void *arena = NULL;
+    uint8_t *img = NULL;
+    FILE *dump = NULL;
+    size_t arena_size, stride, i;
+    unsigned bpp;
+    long max_tris, max_verts, max_edges;
+    int rc = SIM_EXIT_FAIL, f;
+
+    memset(&scene, 0, sizeof scene);
+    opts_default(&o);
+    f = parse_args(argc, argv, &o);
+    if (f != 0) {
+        free(o.files);
+        return f;
+    }
+
+    /* Camera and projection first: bad numbers are usage errors. */
+    if (vec_to_fixed("--eye", o.eye, &eye) != 0 || vec_to_fixed("--target", o.target, &target) != 0 ||
+        vec_to_fixed("--up", o.up, &up) != 0 || sim_to_fixed("--fov", o.fov, &fov) != 0 ||
+        sim_to_fixed("--near", o.near_z, &near_z) != 0 ||
+        sim_to_fixed("--far", o.far_z, &far_z) != 0) {
+        free(o.files);
+        return SIM_EXIT_USAGE;
+    }
+
+    for (f = 0; f < o.nfiles; f++) {
+        if (sim_scene_load(&scene, o.files[f],
+                           o.shade == SHADE_GOURAUD ? (o.smooth ? 2 : 1) : 0) != 0)
+            goto done;
+        if (scene.total_tris > ZS_MAX_TRIANGLES) {
+            fprintf(stderr,
+                    "zspan-sim: too many triangles: %lu after %s (a frame takes at most %u, the "
+                    "tags of --shade ids are 16-bit)\n",
+                    (unsigned long)scene.total_tris, o.files[f], (unsigned)ZS_MAX_TRIANGLES);
+            goto done;
+        }
+    }
+
+    if (o.fit) {
+        double lo[3], hi[3], c[3], radius;
+        if (sim_scene_bounds(&scene, lo, hi)) {
+            for (f = 0; f < 3; f++)
+                c[f] = 0.5 * (lo[f] + hi[f]);
+            radius = sim_scene_radius(&scene, c);
+            sim_scene_transform(&scene, c, radius > 0.0 ? 1.0 / radius : 1.0);
+        }
+    }
+    if (sim_scene_quantize(&scene) != 0)
+        goto done;
+
+    /* Colours: vertex colours, else the material's diffuse colour, else (flat)
+     * a palette colour per triangle or (gouraud) a light grey. */
+    for (i = 0; i < scene.count; i++) {
+        sim_chunk *c = &scene.chunks[i];
+        if (o.shade == SHADE_FLAT && c->vcol == NULL && !c->has_material_color &&
+            c->tcount > 0) {
+            uint32_t t;
+            c->fcol = malloc((size_t)c->tcount * sizeof *c->fcol);
+            if (c->fcol == NULL) {
+                fprintf(stderr, "zspan-sim: out of memory\n");
+                goto done;
+            }
+            for (t = 0; t < c->tcount; t++)
+                c->fcol[t] = palette_color(c->first_tri + t);
+            c->mesh.face_colors = c->fcol;
+        }
+    }
+
+    if (o.has_rot) {
+        zs_fixed ax, ay, az;
+        zs_mat34 rx, ry, rz, m;
+        if (sim_to_fixed("--rotate", o.rot[0], &ax) != 0 ||
+            sim_to_fixed("--rotate", o.rot[1], &ay) != 0 ||
+            sim_to_fixed("--rotate", o.rot[2], &az) != 0) {
+            rc = SIM_EXIT_USAGE;
+            goto done;
+        }
+        /* Rx first, then Ry, then Rz: M = Rz * Ry * Rx. */
+        rx = zs_mat34_rotate_x(ax);
+        ry = zs_mat34_rotate_y(ay);
+        rz = zs_mat34_rotate_z(az);
+        m = zs_mat34_mul(&ry, &rx);
+        model = zs_mat34_mul(&rz, &m);
+        model_ptr = &model;
+    }
+
+    /* Arena from the scene: clipping can split a triangle into a few. */
+    max_tris = o.max_tris ? o.max_tris : (long)scene.total_tris * 3 + 64;
+    if (max_tris > ZS_MAX_TRIANGLES)
+        max_tris = ZS_MAX_TRIANGLES;
+    max_verts = o.max_verts ? o.max_verts : max_tris * 3;
+    if (max_verts > ZS_MAX_VERTICES)
+        max_verts = ZS_MAX_VERTICES;
+    max_edges = o.max_edges ? o.max_edges : ZS_MAX_ACTIVE_EDGES;
+    cfg = zs_config_default((uint16_t)o.width, (uint16_t)o.height, (uint16_t)max_tris,
+                            (uint16_t)max_verts, (uint16_t)max_edges);
+    arena_size = zs_arena_bytes(&cfg);
+    if (arena_size == 0) {
+        fprintf(stderr, "zspan-sim: zs_arena_bytes: invalid configuration\n");
+        goto done;
+    }
+    arena = malloc(arena_size);
+    if (arena == NULL) {
+        fprintf(stderr, "zspan-sim: cannot allocate an arena of %lu bytes\n",
+                (unsigned long)arena_size);
+        goto done;
+    }
+    st = zs_init(&r, arena, arena_size, &cfg);
+    if (st != ZS_OK) {
+        rc = core_error("zs_init", st);
+        goto done;
+    }
+    st = zs_camera_look_at(&cam, eye, target, up);
+    if (st != ZS_OK) {
+        rc = core_error("zs_camera_look_at (--eye/--target/--up)", st);
+        goto done;
+    }
+    st = zs_camera_perspective(&cam, fov, near_z, far_z);
+    if (st != ZS_OK) {
+        rc = core_error("zs_camera_perspective (--fov/--near/--far)", st);
+        goto done;
+    }
+    st = zs_frame_begin(&r, &cam, o.mode);
+    if (st != ZS_OK) {
+        rc = core_error("zs_frame_begin", st);
+        goto done;
+    }
+
+    sp = zs_shade_default();
+    sp.background = o.background;
+    if (o.shade == SHADE_IDS) {
+        sp.shading = ZS_SHADE_FLAT;
+        sp.format = ZS_FMT_ID16;
+    } else {
+        sp.shading = o.shade == SHADE_GOURAUD ? ZS_SHADE_GOURAUD : ZS_SHADE_FLAT;
+        sp.format = ZS_FMT_RGB888;
+        if (o.unlit) {
+            sp.ambient = ZS_FX_ONE;
+            sp.light_count = 0;
+        } else {
+            double ld[3];
+            double ambient = o.has_ambient ? o.ambient : 0.3;
+            double intensity = o.has_light ? o.light[3] : 0.7;
+            zs_vec3 lv;
+            if (o.has_light) {
+                ld[0] = o.light[0];
+                ld[1] = o.light[1];
+                ld[2] = o.light[2];
+                normalize3(ld);
+            } else {
+                default_light(&o, ld);
+            }
+            if (vec_to_fixed("--light", ld, &lv) != 0 ||
+                sim_to_fixed("--ambient", ambient, &sp.ambient) != 0 ||
+                sim_to_fixed("--light", intensity, &sp.lights[0].intensity) != 0) {
+                rc = SIM_EXIT_USAGE;
+                goto done;
+            }
+            sp.light_count = 1;
+            sp.lights[0].direction = lv;
+        }
+        if (o.fog) {
+            sp.fog.enabled = 1;
+            sp.fog.color = o.fog_color;
+            if (sim_to_fixed("--fog", o.fog_start, &sp.fog.start) != 0 ||
+                sim_to_fixed("--fog", o.fog_end, &sp.fog.end) != 0) {
+                rc = SIM_EXIT_USAGE;
+                goto done;
+            }
+        }
+    }
+    st = zs_frame_shading(&r, &sp);
+    if (st != ZS_OK) {
+        rc = core_error("zs_frame_shading", st);
+        goto done;
+    }
+
+    if (o.dump != NULL) {
+        if (sim_make_parent_dirs(o.dump) != 0)
+            goto done;
+        dump = fopen(o.dump, "w");
+        if (dump == NULL) {
+            fprintf(stderr, "zspan-sim: cannot write %s: %s\n", o.dump, strerror(errno));
+            goto done;
+        }
+        zs_set_setup_hook(&r, dump_hook, dump);
+    }
+    for (i = 0; i < scene.count; i++) {
+        st = zs_draw(&r, &scene.chunks[i].mesh, model_ptr);
+        if (st != ZS_OK) {
+            rc = core_error("zs_draw", st);
+            goto done;
+        }
+    }
+    zs_set_setup_hook(&r, NULL, NULL);
+
+    bpp = zs_format_bytes(sp.format);
+    stride = (size_t)o.width * bpp;
+    img = calloc((size_t)o.height, stride);
+    if (img == NULL) {
+        fprintf(stderr, "zspan-sim: out of memory\n");
+        goto done;
+    }
+    st = sim_render_image(&r, img, stride, o.height, (int)o.band);
+    if (st != ZS_OK) {
+        rc = core_error("zs_render_frame", st);
+        goto done;
+    }
+    if (dump != NULL) {
+        int bad = ferror(dump);
+        if (fclose(dump) != 0 || bad) {
+            dump = NULL;
+            fprintf(stderr, "zspan-sim: error writing %s\n", o.dump);
+            goto done;
+        }
+        dump = NULL;
+    }
+
+    if (sim_make_parent_dirs(o.out) != 0)
+        goto done;
+    if (o.shade == SHADE_IDS) {
+        if (png_write_gray16(o.out, o.width, o.height, img, stride) != 0)
+            goto done;
+    } else if (png_write_rgb8(o.out, o.width, o.height, img, stride) != 0) {
+        goto done;
+    }
+
+    {
+        const zs_stats *s = zs_frame_stats(&r);
+        if (!o.quiet) {
+            printf("render: %d files, %lu triangles -> %s (%dx%d, %s, %s, checksum %08lx)\n",
+                   o.nfiles, (unsigned long)scene.total_tris, o.out, o.width, o.height,
+                   sim_mode_name(o.mode),
+                   o.shade == SHADE_IDS ? "ids" : o.shade == SHADE_GOURAUD ? "gouraud" : "flat",
+                   (unsigned long)sim_fnv1a(img, stride * (size_t)o.height));
+            sim_print_stats(stdout, s);
+        }
+        if (s->tris_dropped || s->verts_dropped || s->edges_dropped)
+            fprintf(stderr,
+                    "zspan-sim: warning: pools full: %lu triangles, %lu vertices dropped, %lu "
+                    "triangles not activated (edge pool)\n",
+                    (unsigned long)s->tris_dropped, (unsigned long)s->verts_dropped,
+                    (unsigned long)s->edges_dropped);
+    }
+    rc = SIM_EXIT_OK;
+done:
+    if (dump != NULL)
+        fclose(dump);
+    free(img);
+    free(arena);
+    sim_scene_free(&scene);
+    free(o.files);
+    return rc;
+}

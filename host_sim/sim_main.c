@@ -1,0 +1,277 @@
+/*
+ * zspan-sim: the host simulator of zspan.
+ *
+ *   zspan-sim demo [options]            the built-in scene -> out/demo.png
+ *   zspan-sim render FILE... [options]  meshes (assimp) -> PNG
+ *   zspan-sim --help
+ */
+#include "sim.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "demo_scene.h"
+#include "png_out.h"
+
+#define SIM_MAX_COMMANDS 16
+static const sim_command *extra_commands[SIM_MAX_COMMANDS];
+static int n_extra_commands;
+
+void sim_register_command(const sim_command *cmd)
+{
+    if (cmd != NULL && n_extra_commands < SIM_MAX_COMMANDS)
+        extra_commands[n_extra_commands++] = cmd;
+}
+
+void sim_print_usage(FILE *f)
+{
+    int i;
+
+    fputs(
+        "usage: zspan-sim demo [options]\n"
+        "       zspan-sim render FILE [FILE...] [options]\n"
+        "       zspan-sim COMMAND [options]   (extension commands, listed at the end)\n"
+        "       zspan-sim --help\n"
+        "\n"
+        "demo: renders the built-in scene (a torus sunk into a checkered ground, cubes\n"
+        "cutting into each other, a pyramid) and prints the frame statistics.\n"
+        "  --out FILE.png        output (default out/demo.png)\n"
+        "  --mode span|zline     visibility mode (default span)\n"
+        "  --shade flat|gouraud  shading (default gouraud)\n"
+        "  --size WxH            image size (default 240x240)\n"
+        "  --frame N             camera orbit frame, 3 degrees each (default 0)\n"
+        "  --band N              rows per zs_render_frame band (default 1)\n"
+        "  --no-compare          do not also render the other mode and compare\n"
+        "\n"
+        "render: loads meshes with assimp (triangulated; points and lines skipped) and\n"
+        "renders them. Triangle tags are 1-based in load order across all files.\n"
+        "  --size WxH            image size (default 240x240)\n"
+        "  --fov DEG             vertical field of view (default 60)\n"
+        "  --near N --far F      clip distances (default 0.1 and 100)\n"
+        "  --eye x,y,z           camera position (default 0,0,3)\n"
+        "  --target x,y,z        point looked at (default 0,0,0)\n"
+        "  --up x,y,z            up direction (default 0,1,0)\n"
+        "  --fit                 centre the bounding box of all meshes on the origin and\n"
+        "                        scale so the farthest vertex is at distance 1; without it\n"
+        "                        mesh coordinates are world coordinates\n"
+        "  --rotate ax,ay,az     model rotation in degrees, after --fit: about x first,\n"
+        "                        then y, then z (M = Rz * Ry * Rx), about the origin\n"
+        "  --mode span|zline     visibility mode (default span)\n"
+        "  --shade flat|gouraud|ids\n"
+        "                        flat/gouraud: 8-bit RGB PNG; ids: 16-bit grey PNG whose\n"
+        "                        value is the tag of the visible triangle, 0 = background\n"
+        "                        (default flat)\n"
+        "  --smooth              (gouraud) smooth vertex normals even when the file\n"
+        "                        has its own (default: the file's normals, smooth\n"
+        "                        ones generated only when it has none)\n"
+        "  --out FILE.png        output (default out/render.png)\n"
+        "  --dump-tris FILE      one line per stored triangle record: tag, then x y z of\n"
+        "                        each vertex (x, y in pixels, z window depth in [0, 1])\n"
+        "  --background RRGGBB   background colour (default 000000)\n"
+        "  --light x,y,z[,I]     direction toward the light, intensity I (default 0.7;\n"
+        "                        default direction: over the viewer's left shoulder)\n"
+        "  --ambient A           ambient term (default 0.3)\n"
+        "  --unlit               colours as they are (ambient 1, no light)\n"
+        "  --fog start,end,RRGGBB  distance fog\n"
+        "  --band N              rows per zs_render_frame band (default 1)\n"
+        "  --max-tris N --max-verts N --max-edges N\n"
+        "                        pool capacities (default: from the triangle count)\n"
+        "  --quiet               print nothing on success\n"
+        "Colours: vertex colours, else the material's diffuse colour, else a palette\n"
+        "colour per triangle (flat) or light grey (gouraud). Counter-clockwise faces\n"
+        "are front faces. Numbers are decimal, converted to Q16.16 (rounded).\n"
+        "Exit status: 0 ok, 1 failure (file, core, output), 2 bad command line.\n",
+        f);
+    for (i = 0; i < n_extra_commands; i++) {
+        fprintf(f, "\n%s:\n", extra_commands[i]->name);
+        if (extra_commands[i]->usage != NULL)
+            fputs(extra_commands[i]->usage, f);
+    }
+}
+
+static double now_ms(void)
+{
+    struct timespec ts;
+
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1000.0 + (double)ts.tv_nsec / 1e6;
+}
+
+/* Renders demo frame `frame` into img (RGB888). Returns a status; *ms gets the
+ * time from zs_frame_begin to the last row. */
+static zs_status demo_render(zs_renderer *r, const demo_scene *s, uint32_t frame,
+                             zs_visibility mode, zs_shading shading, uint8_t *img, size_t stride,
+                             int height, int band, double *ms)
+{
+    double t0 = now_ms();
+    zs_status st = demo_frame(r, s, frame, mode, shading, ZS_FMT_RGB888);
+
+    if (st != ZS_OK)
+        return st;
+    st = sim_render_image(r, img, stride, height, band);
+    *ms = now_ms() - t0;
+    return st;
+}
+
+int sim_cmd_demo(int argc, char **argv)
+{
+    static demo_scene scene;
+    const char *out = "out/demo.png";
+    zs_visibility mode = ZS_MODE_SPAN;
+    zs_shading shading = ZS_SHADE_GOURAUD;
+    int width = 240, height = 240, compare = 1, rc = SIM_EXIT_FAIL, i;
+    long frame = 0, band = 1;
+    zs_config cfg;
+    zs_renderer r;
+    zs_status st;
+    zs_stats stats;
+    void *arena = NULL;
+    uint8_t *img = NULL, *other = NULL;
+    size_t arena_size, stride;
+    double ms = 0.0, ms_other = 0.0;
+    long max_tris, max_verts;
+
+    for (i = 1; i < argc; i++) {
+        const char *v = NULL;
+        int m;
+        if (strcmp(argv[i], "--no-compare") == 0) {
+            compare = 0;
+        } else if ((m = sim_opt_value(argc, argv, &i, "--out", &v)) != 0) {
+            if (m < 0)
+                return SIM_EXIT_USAGE;
+            out = v;
+        } else if ((m = sim_opt_value(argc, argv, &i, "--mode", &v)) != 0) {
+            if (m < 0)
+                return SIM_EXIT_USAGE;
+            if (strcmp(v, "span") == 0) {
+                mode = ZS_MODE_SPAN;
+            } else if (strcmp(v, "zline") == 0) {
+                mode = ZS_MODE_ZLINE;
+            } else {
+                fprintf(stderr, "zspan-sim: --mode: '%s' is not span or zline\n", v);
+                return SIM_EXIT_USAGE;
+            }
+        } else if ((m = sim_opt_value(argc, argv, &i, "--shade", &v)) != 0) {
+            if (m < 0)
+                return SIM_EXIT_USAGE;
+            if (strcmp(v, "flat") == 0) {
+                shading = ZS_SHADE_FLAT;
+            } else if (strcmp(v, "gouraud") == 0) {
+                shading = ZS_SHADE_GOURAUD;
+            } else {
+                fprintf(stderr, "zspan-sim: --shade: '%s' is not flat or gouraud\n", v);
+                return SIM_EXIT_USAGE;
+            }
+        } else if ((m = sim_opt_value(argc, argv, &i, "--size", &v)) != 0) {
+            if (m < 0 || sim_parse_size("--size", v, &width, &height) != 0)
+                return SIM_EXIT_USAGE;
+        } else if ((m = sim_opt_value(argc, argv, &i, "--frame", &v)) != 0) {
+            if (m < 0 || sim_parse_long("--frame", v, 0, 1000000000L, &frame) != 0)
+                return SIM_EXIT_USAGE;
+        } else if ((m = sim_opt_value(argc, argv, &i, "--band", &v)) != 0) {
+            if (m < 0 || sim_parse_long("--band", v, 1, ZS_MAX_DIM, &band) != 0)
+                return SIM_EXIT_USAGE;
+        } else {
+            fprintf(stderr, "zspan-sim: demo: unknown argument '%s' (see zspan-sim --help)\n",
+                    argv[i]);
+            return SIM_EXIT_USAGE;
+        }
+    }
+
+    demo_scene_init(&scene);
+    max_tris = 3L * DEMO_TRIANGLES;
+    if (max_tris > ZS_MAX_TRIANGLES)
+        max_tris = ZS_MAX_TRIANGLES;
+    max_verts = 3L * max_tris;
+    if (max_verts > ZS_MAX_VERTICES)
+        max_verts = ZS_MAX_VERTICES;
+    cfg = zs_config_default((uint16_t)width, (uint16_t)height, (uint16_t)max_tris,
+                            (uint16_t)max_verts, (uint16_t)ZS_MAX_ACTIVE_EDGES);
+    arena_size = zs_arena_bytes(&cfg);
+    if (arena_size == 0) {
+        fprintf(stderr, "zspan-sim: zs_arena_bytes: invalid configuration\n");
+        return SIM_EXIT_FAIL;
+    }
+    arena = malloc(arena_size);
+    stride = (size_t)width * 3u;
+    img = calloc((size_t)height, stride);
+    other = calloc((size_t)height, stride);
+    if (arena == NULL || img == NULL || other == NULL) {
+        fprintf(stderr, "zspan-sim: out of memory\n");
+        goto done;
+    }
+    st = zs_init(&r, arena, arena_size, &cfg);
+    if (st != ZS_OK) {
+        fprintf(stderr, "zspan-sim: zs_init: %s\n", zs_strerror(st));
+        goto done;
+    }
+    st = demo_render(&r, &scene, (uint32_t)frame, mode, shading, img, stride, height, (int)band,
+                     &ms);
+    if (st != ZS_OK) {
+        fprintf(stderr, "zspan-sim: demo frame: %s\n", zs_strerror(st));
+        goto done;
+    }
+    stats = *zs_frame_stats(&r);
+    if (sim_make_parent_dirs(out) != 0 || png_write_rgb8(out, width, height, img, stride) != 0)
+        goto done;
+
+    printf("demo: %dx%d, %s, %s, frame %ld -> %s\n", width, height, sim_mode_name(mode),
+           shading == ZS_SHADE_GOURAUD ? "gouraud" : "flat", frame, out);
+    printf("  scene: %d triangles, %d vertices in %d meshes; arena %lu bytes\n",
+           (int)DEMO_TRIANGLES, (int)DEMO_VERTICES, 3 + DEMO_CUBES, (unsigned long)arena_size);
+    sim_print_stats(stdout, &stats);
+    printf("  frame checksum (FNV-1a of RGB888): %08lx; host time %.2f ms\n",
+           (unsigned long)sim_fnv1a(img, stride * (size_t)height), ms);
+
+    if (compare) {
+        zs_visibility om = mode == ZS_MODE_SPAN ? ZS_MODE_ZLINE : ZS_MODE_SPAN;
+        size_t n = stride * (size_t)height, k;
+        unsigned long diff = 0;
+        st = demo_render(&r, &scene, (uint32_t)frame, om, shading, other, stride, height,
+                         (int)band, &ms_other);
+        if (st != ZS_OK) {
+            fprintf(stderr, "zspan-sim: demo frame (%s): %s\n", sim_mode_name(om),
+                    zs_strerror(st));
+            goto done;
+        }
+        for (k = 0; k < n; k += 3)
+            diff += memcmp(img + k, other + k, 3) != 0;
+        if (diff == 0)
+            printf("  %s vs %s: identical images (%s %.2f ms)\n", sim_mode_name(mode),
+                   sim_mode_name(om), sim_mode_name(om), ms_other);
+        else
+            printf("  %s vs %s: %lu of %lu pixels differ\n", sim_mode_name(mode),
+                   sim_mode_name(om), diff, (unsigned long)(n / 3));
+    }
+    rc = SIM_EXIT_OK;
+done:
+    free(other);
+    free(img);
+    free(arena);
+    return rc;
+}
+
+int main(int argc, char **argv)
+{
+    int i;
+
+    if (argc < 2) {
+        sim_print_usage(stderr);
+        return SIM_EXIT_USAGE;
+    }
+    if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 ||
+        strcmp(argv[1], "help") == 0) {
+        sim_print_usage(stdout);
+        return SIM_EXIT_OK;
+    }
+    if (strcmp(argv[1], "demo") == 0)
+        return sim_cmd_demo(argc - 1, argv + 1);
+    if (strcmp(argv[1], "render") == 0)
+        return sim_cmd_render(argc - 1, argv + 1);
+    for (i = 0; i < n_extra_commands; i++)
+        if (strcmp(argv[1], extra_commands[i]->name) == 0)
+            return extra_commands[i]->run(argc - 1, argv + 1);
+    fprintf(stderr, "zspan-sim: unknown command '%s' (try zspan-sim --help)\n", argv[1]);
+    return SIM_EXIT_USAGE;
+}

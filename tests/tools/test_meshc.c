@@ -1,0 +1,458 @@
+/*
+ * Tests of the mesh converter (build/zspan-meshc).
+ *
+ *  - Round trip: tests/tools/data/known.obj and assimp's sphereWithHole.stl are
+ *    converted at build time (mk/firmware.mk) and compiled in; the positions
+ *    must equal the source ones (after the requested transform) within the
+ *    quantisation error, the triangles must cover the same oriented area, and
+ *    the core must accept the meshes.
+ *  - Errors: every file of assimp's invalid/ folder, a missing file, an
+ *    oversized model, bad options: a clear "error:" message and a non-zero
+ *    exit status (never a crash).
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <dirent.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "t_known.h"
+#include "t_known_nc.h"
+#include "t_sphere.h"
+
+#ifndef MESHC
+#define MESHC "build/zspan-meshc"
+#endif
+#ifndef ASSIMP_MODELS
+#define ASSIMP_MODELS "/usr/share/assimp/models"
+#endif
+#ifndef TOOLS_DATA
+#define TOOLS_DATA "tests/tools/data"
+#endif
+
+/* The source of known.obj (faces as written, 1-based). */
+static const double known_v[7][3] = {
+    {0.125, -1.5, 1.5625}, {3.75, -1.25, -0.1875}, {3.5, 2.0, 0.75},  {-0.5, 1.875, 2.71875},
+    {-2.25, 0.3333, 0.1},  {4.0, 0.0, 3.0},        {0.125, -1.5, 1.5625},
+};
+static const int known_faces[3][4] = {{1, 2, 3, 4}, {7, 4, 5, 0}, {2, 6, 3, 0}};
+
+/* ---- helpers ----------------------------------------------------------- */
+
+typedef struct run_result {
+    int exited;   /* 1 if it exited normally */
+    int status;   /* exit status */
+    char out[8192];
+} run_result;
+
+static void run(run_result *res, const char *fmt, ...)
+{
+    char cmd[2048];
+    va_list ap;
+    FILE *p;
+    size_t n = 0;
+    int st;
+    va_start(ap, fmt);
+    vsnprintf(cmd, sizeof cmd, fmt, ap);
+    va_end(ap);
+    strncat(cmd, " 2>&1", sizeof cmd - strlen(cmd) - 1);
+    p = popen(cmd, "r");
+    assert_non_null(p);
+    while (n + 1 < sizeof res->out) {
+        size_t got = fread(res->out + n, 1, sizeof res->out - 1 - n, p);
+        if (got == 0)
+            break;
+        n += got;
+    }
+    res->out[n] = 0;
+    /* drain */
+    while (fgetc(p) != EOF) {
+    }
+    st = pclose(p);
+    res->exited = WIFEXITED(st);
+    res->status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+static double model_coord(const zs_mesh *m, unsigned v, int axis)
+{
+    return (double)m->positions[3 * v + (unsigned)axis] * (double)m->scale / 65536.0;
+}
+
+static void cross3(const double a[3], const double b[3], const double c[3], double n[3])
+{
+    double e1[3], e2[3];
+    int r;
+    for (r = 0; r < 3; r++) {
+        e1[r] = b[r] - a[r];
+        e2[r] = c[r] - a[r];
+    }
+    n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+}
+
+/* Every output vertex must be within the quantisation error of some source
+ * vertex transformed by (p - shift) * k; returns the largest error seen. */
+static double check_positions(const zs_mesh *m, const double (*src)[3], size_t nsrc,
+                              const double shift[3], double k)
+{
+    double tol = (double)m->scale / 131072.0 + 1e-9, worst = 0;
+    unsigned v;
+    for (v = 0; v < m->vertex_count; v++) {
+        double best = 1e30;
+        size_t i;
+        for (i = 0; i < nsrc; i++) {
+            double d = 0;
+            int r;
+            for (r = 0; r < 3; r++) {
+                double e = fabs(model_coord(m, v, r) - (src[i][r] - shift[r]) * k);
+                if (e > d)
+                    d = e;
+            }
+            if (d < best)
+                best = d;
+        }
+        if (best > tol)
+            fail_msg("vertex %u is %g from every source vertex (tolerance %g)", v, best, tol);
+        if (best > worst)
+            worst = best;
+    }
+    return worst;
+}
+
+/* Sum of the triangles' area vectors (orientation included). */
+static void area_vector(const zs_mesh *m, double out[3])
+{
+    unsigned t;
+    out[0] = out[1] = out[2] = 0;
+    for (t = 0; t < m->triangle_count; t++) {
+        double p[3][3], n[3];
+        int c, r;
+        for (c = 0; c < 3; c++)
+            for (r = 0; r < 3; r++)
+                p[c][r] = model_coord(m, m->indices[3 * t + (unsigned)c], r);
+        cross3(p[0], p[1], p[2], n);
+        for (r = 0; r < 3; r++)
+            out[r] += n[r] / 2;
+    }
+}
+
+static void known_area_vector(const double shift[3], double k, double out[3])
+{
+    int f, r;
+    out[0] = out[1] = out[2] = 0;
+    for (f = 0; f < 3; f++) {
+        int nv = known_faces[f][3] ? 4 : 3, j;
+        for (j = 1; j + 1 < nv; j++) { /* planar faces: any fan gives the same vector */
+            double p[3][3], n[3];
+            int c;
+            int idx[3];
+            idx[0] = known_faces[f][0] - 1;
+            idx[1] = known_faces[f][j] - 1;
+            idx[2] = known_faces[f][j + 1] - 1;
+            for (c = 0; c < 3; c++)
+                for (r = 0; r < 3; r++)
+                    p[c][r] = (known_v[idx[c]][r] - shift[r]) * k;
+            cross3(p[0], p[1], p[2], n);
+            for (r = 0; r < 3; r++)
+                out[r] += n[r] / 2;
+        }
+    }
+}
+
+/* ---- round trip ----------------------------------------------------------- */
+
+static void test_round_trip_known(void **state)
+{
+    static const double zero[3] = {0, 0, 0};
+    double a[3], b[3], worst;
+    int r;
+    (void)state;
+    assert_int_equal(t_known.triangle_count, 4);  /* quad -> 2, plus 2 triangles */
+    assert_int_equal(t_known.vertex_count, 6);    /* vertex 7 merged into vertex 1 */
+    assert_int_equal(T_KNOWN_TRIANGLE_COUNT, 4);
+    assert_int_equal(t_known.scale, T_KNOWN_SCALE);
+    /* smallest scale keeping |4.0| within int16: ceil(4 * 65536 / 32767) */
+    assert_int_equal(t_known.scale, 9);
+    assert_null(t_known.face_colors);
+    assert_null(t_known.vertex_colors);
+    assert_null(t_known.face_normals);
+    assert_null(t_known.vertex_normals);
+    worst = check_positions(&t_known, known_v, 7, zero, 1.0);
+    print_message("known.obj: worst position error %.3g (bound %.3g)\n", worst,
+                  9.0 / 131072.0);
+    area_vector(&t_known, a);
+    known_area_vector(zero, 1.0, b);
+    for (r = 0; r < 3; r++)
+        assert_true(fabs(a[r] - b[r]) < 1e-3);
+    {
+        unsigned i;
+        for (i = 0; i < 3u * t_known.triangle_count; i++)
+            assert_true(t_known.indices[i] < t_known.vertex_count);
+    }
+}
+
+static void test_round_trip_options(void **state)
+{
+    /* --center --scale 100 --colors index --normals face */
+    const double shift[3] = {(-2.25 + 4.0) / 2, (-1.5 + 2.0) / 2, (-0.1875 + 3.0) / 2};
+    double a[3], b[3];
+    unsigned t;
+    int r;
+    (void)state;
+    assert_int_equal(t_known_nc.triangle_count, 4);
+    assert_int_equal(t_known_nc.vertex_count, 6);
+    check_positions(&t_known_nc, known_v, 7, shift, 100.0);
+    area_vector(&t_known_nc, a);
+    known_area_vector(shift, 100.0, b);
+    for (r = 0; r < 3; r++)
+        assert_true(fabs(a[r] - b[r]) < 0.05 * (fabs(b[r]) + 1));
+    assert_non_null(t_known_nc.face_colors);
+    assert_non_null(t_known_nc.face_normals);
+    assert_null(t_known_nc.vertex_normals);
+    for (t = 0; t < t_known_nc.triangle_count; t++) {
+        const int16_t *n = &t_known_nc.face_normals[3 * t];
+        double p[3][3], g[3], len, glen, dot = 0;
+        int c;
+        assert_true(t_known_nc.face_colors[t] <= 0xFFFFFFu);
+        assert_true(t_known_nc.face_colors[t] != 0);
+        len = sqrt((double)n[0] * n[0] + (double)n[1] * n[1] + (double)n[2] * n[2]);
+        assert_true(fabs(len - 16384.0) < 3.0); /* unit vector in Q1.14 */
+        for (c = 0; c < 3; c++)
+            for (r = 0; r < 3; r++)
+                p[c][r] = model_coord(&t_known_nc, t_known_nc.indices[3 * t + (unsigned)c], r);
+        cross3(p[0], p[1], p[2], g);
+        glen = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+        for (r = 0; r < 3; r++)
+            dot += g[r] / glen * n[r] / 16384.0;
+        assert_true(dot > 0.999); /* same direction as the counter-clockwise normal */
+    }
+}
+
+static void test_round_trip_sphere(void **state)
+{
+    double lo[3] = {1e9, 1e9, 1e9}, hi[3] = {-1e9, -1e9, -1e9}, maxd = 0;
+    double tol = (double)t_sphere.scale / 131072.0 * 2;
+    unsigned v;
+    int r;
+    (void)state;
+    /* Debian's assimp test model: 285 triangles, 146 distinct positions. */
+    assert_int_equal(t_sphere.triangle_count, 285);
+    assert_int_equal(t_sphere.vertex_count, 146);
+    assert_non_null(t_sphere.vertex_normals);
+    for (v = 0; v < t_sphere.vertex_count; v++) {
+        double p[3], d = 0, dot = 0, nl = 0;
+        for (r = 0; r < 3; r++) {
+            p[r] = model_coord(&t_sphere, v, r);
+            if (p[r] < lo[r])
+                lo[r] = p[r];
+            if (p[r] > hi[r])
+                hi[r] = p[r];
+            d += p[r] * p[r];
+        }
+        d = sqrt(d);
+        if (d > maxd)
+            maxd = d;
+        for (r = 0; r < 3; r++) {
+            double n = t_sphere.vertex_normals[3 * v + (unsigned)r] / 16384.0;
+            dot += n * p[r] / d;
+            nl += n * n;
+        }
+        assert_true(fabs(sqrt(nl) - 1.0) < 2e-4);
+        assert_true(dot > 0.9); /* smooth normals of a sphere point outward */
+    }
+    /* --normalize: bounding-box centre at the origin, largest distance 1. */
+    for (r = 0; r < 3; r++)
+        assert_true(fabs((lo[r] + hi[r]) / 2) < tol);
+    assert_true(fabs(maxd - 1.0) < tol * 2);
+}
+
+static void test_core_accepts_meshes(void **state)
+{
+    static uint8_t arena[ZS_ARENA_BYTES(64, 64, 400, 400, 256)];
+    const zs_mesh *meshes[3];
+    zs_renderer r;
+    zs_config cfg = zs_config_default(64, 64, 400, 400, 256);
+    zs_camera cam;
+    zs_mat34 id = zs_mat34_identity();
+    int i;
+    (void)state;
+    meshes[0] = &t_known;
+    meshes[1] = &t_known_nc;
+    meshes[2] = &t_sphere;
+    memset(&cam, 0, sizeof cam);
+    assert_int_equal(zs_init(&r, arena, sizeof arena, &cfg), ZS_OK);
+    assert_int_equal(zs_camera_set_view(&cam, &id), ZS_OK);
+    assert_int_equal(zs_camera_perspective(&cam, ZS_FX(60), ZS_FX_RATIO(1, 10), ZS_FX(1000)),
+                     ZS_OK);
+    for (i = 0; i < 3; i++) {
+        zs_mat34 mv = zs_mat34_translate(0, 0, i == 1 ? ZS_FX(-900) : ZS_FX(-10));
+        uint8_t line[64 * 2];
+        int y;
+        assert_int_equal(zs_frame_begin(&r, &cam, ZS_MODE_SPAN), ZS_OK);
+        assert_int_equal(zs_draw(&r, meshes[i], &mv), ZS_OK);
+        for (y = 0; y < 64; y++)
+            assert_int_equal(zs_render_rows(&r, y, 1, line, sizeof line), ZS_OK);
+        assert_int_equal(zs_frame_stats(&r)->tris_submitted, meshes[i]->triangle_count);
+    }
+}
+
+/* ---- errors ----------------------------------------------------------------- */
+
+static void expect_error(const char *what, const run_result *res, int code, const char *needle)
+{
+    if (!res->exited)
+        fail_msg("%s: the converter did not exit normally:\n%s", what, res->out);
+    if (res->status == 0)
+        fail_msg("%s: exit status 0, expected an error:\n%s", what, res->out);
+    if (code && res->status != code)
+        fail_msg("%s: exit status %d, expected %d:\n%s", what, res->status, code, res->out);
+    if (!strstr(res->out, "error:"))
+        fail_msg("%s: no 'error:' message:\n%s", what, res->out);
+    if (needle && !strstr(res->out, needle))
+        fail_msg("%s: message lacks '%s':\n%s", what, needle, res->out);
+}
+
+static void test_invalid_folder(void **state)
+{
+    DIR *d = opendir(ASSIMP_MODELS "/invalid");
+    struct dirent *e;
+    int files = 0;
+    (void)state;
+    if (!d)
+        fail_msg("cannot open %s/invalid (install assimp-testmodels)", ASSIMP_MODELS);
+    while ((e = readdir(d)) != NULL) {
+        char path[1024];
+        run_result res;
+        if (e->d_name[0] == '.')
+            continue;
+        snprintf(path, sizeof path, "%s/invalid/%s", ASSIMP_MODELS, e->d_name);
+        run(&res, "'%s' -o /tmp/zspan-meshc-invalid-out '%s'", MESHC, path);
+        expect_error(path, &res, 0, path);
+        assert_true(res.status == 3 || res.status == 4);
+        print_message("%s: exit %d: %.*s\n", e->d_name, res.status,
+                      (int)strcspn(res.out, "\n"), res.out);
+        files++;
+    }
+    closedir(d);
+    assert_true(files >= 15);
+}
+
+static void test_missing_and_usage(void **state)
+{
+    run_result res;
+    (void)state;
+    run(&res, "'%s' /nonexistent/model.obj", MESHC);
+    expect_error("missing file", &res, 3, "cannot open");
+    run(&res, "'%s'", MESHC);
+    assert_true(res.exited && res.status == 2);
+    run(&res, "'%s' --frobnicate '%s/known.obj'", MESHC, TOOLS_DATA);
+    expect_error("unknown option", &res, 2, "--frobnicate");
+    run(&res, "'%s' -n 9lives '%s/known.obj'", MESHC, TOOLS_DATA);
+    expect_error("bad name", &res, 2, "not a C identifier");
+    run(&res, "'%s' --colors plaid '%s/known.obj'", MESHC, TOOLS_DATA);
+    expect_error("bad colour source", &res, 2, "plaid");
+    run(&res, "'%s' --max-triangles 0 '%s/known.obj'", MESHC, TOOLS_DATA);
+    expect_error("bad limit", &res, 2, "--max-triangles");
+    run(&res, "'%s' -q -o /nonexistent/dir/out '%s/known.obj'", MESHC, TOOLS_DATA);
+    expect_error("unwritable output", &res, 5, "cannot write");
+    run(&res, "'%s' --info --lenient '%s/OBJ/testpoints.obj'", MESHC, ASSIMP_MODELS);
+    expect_error("points only", &res, 3, "no triangles");
+    run(&res, "'%s' --help", MESHC);
+    assert_true(res.exited && res.status == 0 && strstr(res.out, "usage:"));
+}
+
+static char tmpdir[64];
+
+static int make_tmpdir(void **state)
+{
+    (void)state;
+    strcpy(tmpdir, "/tmp/zspan-meshc-test.XXXXXX");
+    return mkdtemp(tmpdir) ? 0 : -1;
+}
+
+static int remove_tmpdir(void **state)
+{
+    char cmd[128];
+    (void)state;
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
+    return system(cmd) == 0 ? 0 : -1;
+}
+
+static void test_oversized(void **state)
+{
+    char grid[256], big[256], base[256], hdr[300];
+    FILE *f;
+    int i, j, n = 200;
+    run_result res;
+    (void)state;
+    /* 200 x 200 quads = 80,000 triangles, 40,401 vertices: over 65,535. */
+    snprintf(grid, sizeof grid, "%s/grid.obj", tmpdir);
+    f = fopen(grid, "w");
+    assert_non_null(f);
+    for (j = 0; j <= n; j++)
+        for (i = 0; i <= n; i++)
+            fprintf(f, "v %d %d %g\n", i, j, 0.001 * ((i * 7 + j * 13) % 17));
+    for (j = 0; j < n; j++)
+        for (i = 0; i < n; i++) {
+            int a = j * (n + 1) + i + 1;
+            fprintf(f, "f %d %d %d %d\n", a, a + 1, a + n + 2, a + n + 1);
+        }
+    fclose(f);
+    run(&res, "'%s' --info '%s'", MESHC, grid);
+    expect_error("80,000 triangles", &res, 4, "oversized model");
+    /* With a decimation limit it converts. */
+    snprintf(base, sizeof base, "%s/grid_small", tmpdir);
+    run(&res, "'%s' -q --max-triangles 3000 -n grid_small -o '%s' '%s'", MESHC, base, grid);
+    if (!res.exited || res.status != 0)
+        fail_msg("decimation failed:\n%s", res.out);
+    snprintf(hdr, sizeof hdr, "%s.h", base);
+    f = fopen(hdr, "r");
+    assert_non_null(f);
+    {
+        char line[256];
+        long tris = -1;
+        while (fgets(line, sizeof line, f))
+            if (sscanf(line, "#define GRID_SMALL_TRIANGLE_COUNT %ldu", &tris) == 1)
+                break;
+        fclose(f);
+        assert_true(tris > 100 && tris <= 3000);
+    }
+    /* Coordinates beyond the core's +-32767 model units. */
+    snprintf(big, sizeof big, "%s/big.obj", tmpdir);
+    f = fopen(big, "w");
+    assert_non_null(f);
+    fprintf(f, "v 0 0 0\nv 100000 0 0\nv 0 100000 0\nf 1 2 3\n");
+    fclose(f);
+    run(&res, "'%s' --info '%s'", MESHC, big);
+    expect_error("huge coordinates", &res, 4, "oversized coordinates");
+    run(&res, "'%s' --info --normalize '%s'", MESHC, big);
+    assert_true(res.exited && res.status == 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest round_trip[] = {
+        cmocka_unit_test(test_round_trip_known),
+        cmocka_unit_test(test_round_trip_options),
+        cmocka_unit_test(test_round_trip_sphere),
+        cmocka_unit_test(test_core_accepts_meshes),
+    };
+    const struct CMUnitTest errors[] = {
+        cmocka_unit_test(test_invalid_folder),
+        cmocka_unit_test(test_missing_and_usage),
+        cmocka_unit_test(test_oversized),
+    };
+    int fails = cmocka_run_group_tests_name("meshc_round_trip", round_trip, NULL, NULL);
+    fails += cmocka_run_group_tests_name("meshc_errors", errors, make_tmpdir, remove_tmpdir);
+    return fails ? 1 : 0;
+}

@@ -1,0 +1,1310 @@
+/*
+ * zspan-meshc: converts any model assimp can read into a C source and header
+ * holding a zs_mesh in the core's format (int16 positions + Q16.16 scale,
+ * uint16 indices, optional face/vertex colours and Q1.14 normals).
+ *
+ * Host tool, C99 + assimp (C API). See `zspan-meshc --help` and docs/firmware.md.
+ *
+ * Pipeline: import (validated) -> triangulate -> flatten the node hierarchy
+ * (node transforms applied) -> merge identical vertices -> centre / fit /
+ * scale -> optional decimation (vertex clustering) -> colours and normals ->
+ * quantise -> write NAME.c and NAME.h.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <assimp/cimport.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#define MESHC_VERSION "1.0"
+#define MAX_OUT 65535u              /* uint16 indices and counts */
+#define MAX_IN_VERTICES (1u << 26)  /* refuse absurd input before touching it */
+#define MAX_IN_FACES (1u << 26)
+
+enum { EXIT_USAGE = 2, EXIT_INPUT = 3, EXIT_LIMIT = 4, EXIT_IO = 5 };
+
+enum color_src { COL_NONE, COL_MATERIAL, COL_VERTEX, COL_INDEX };
+enum normal_kind { NRM_NONE, NRM_FACE, NRM_SMOOTH, NRM_FILE };
+
+typedef struct options {
+    const char *input;
+    const char *output;      /* base path; NAME.c / NAME.h */
+    const char *name;
+    int center;
+    int fit;                 /* scale so the largest vertex distance == fit_radius */
+    double fit_radius;
+    double scale;
+    long quant_scale;        /* forced Q16.16 scale, 0 = automatic */
+    unsigned long max_tris, max_verts;
+    enum color_src colors;
+    uint32_t base_color;
+    enum normal_kind normals;
+    int merge;
+    int flip;
+    int lenient;
+    int info_only;
+    int quiet;
+    long mem_limit_mb;       /* address-space limit while importing; 0 = none, -1 = auto */
+} options;
+
+typedef struct vert {
+    double p[3];
+    double n[3];      /* file normal (NRM_FILE) */
+    double c[3];      /* file colour (COL_VERTEX), 0..1 */
+} vert;
+
+typedef struct tri {
+    uint32_t v[3];
+    uint32_t color;   /* 0x00RRGGBB, for COL_MATERIAL / COL_INDEX */
+} tri;
+
+typedef struct model {
+    vert *v;
+    size_t nv, cap_v;
+    tri *t;
+    size_t nt, cap_t;
+    size_t skipped_prims;  /* points and lines */
+    size_t degenerate;     /* triangles with repeated indices after merging */
+} model;
+
+static const char *g_prog = "zspan-meshc";
+static const char *g_input = "";
+
+static void die(int code, const char *fmt, ...)
+{
+    va_list ap;
+    fprintf(stderr, "%s: error: %s: ", g_prog, g_input);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+    exit(code);
+}
+
+static void warn(const options *o, const char *fmt, ...)
+{
+    va_list ap;
+    if (o->quiet)
+        return;
+    fprintf(stderr, "%s: warning: %s: ", g_prog, g_input);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+}
+
+static void *xrealloc(void *p, size_t n)
+{
+    void *q = realloc(p, n ? n : 1);
+    if (!q)
+        die(EXIT_LIMIT, "out of memory (%zu bytes)", n);
+    return q;
+}
+
+/* assimp aborts on a few internal assertions; turn that into a clear message. */
+static void on_fatal_signal(int sig)
+{
+    static const char msg1[] = ": error: the model importer crashed (signal ";
+    static const char msg2[] = ") while reading ";
+    char num[4];
+    int k = 0;
+    num[k++] = (char)('0' + (sig / 10) % 10);
+    num[k++] = (char)('0' + sig % 10);
+    (void)!write(2, g_prog, strlen(g_prog));
+    (void)!write(2, msg1, sizeof msg1 - 1);
+    (void)!write(2, num, (size_t)k);
+    (void)!write(2, msg2, sizeof msg2 - 1);
+    (void)!write(2, g_input, strlen(g_input));
+    (void)!write(2, "\n", 1);
+    _exit(EXIT_INPUT);
+}
+
+/* ------------------------------------------------------------------ */
+/* assimp log capture: loader errors are fatal unless --lenient          */
+/* ------------------------------------------------------------------ */
+
+static char g_log_errors[2048];
+static size_t g_log_error_count;
+
+static void log_cb(const char *msg, char *user)
+{
+    size_t len, have;
+    (void)user;
+    if (strncmp(msg, "Error,", 6) != 0)
+        return;
+    g_log_error_count++;
+    msg += 6;
+    while (*msg == ' ')
+        msg++;
+    if (strncmp(msg, "T0: ", 4) == 0)
+        msg += 4;
+    have = strlen(g_log_errors);
+    len = strlen(msg);
+    while (len && (msg[len - 1] == '\n' || msg[len - 1] == '\r'))
+        len--;
+    if (have + len + 8 < sizeof g_log_errors) {
+        memcpy(g_log_errors + have, "\n  ", 3);
+        memcpy(g_log_errors + have + 3, msg, len);
+        g_log_errors[have + 3 + len] = 0;
+    }
+}
+
+/* ------------------------------------------------------------------ */
+/* Import                                                               */
+/* ------------------------------------------------------------------ */
+
+static void add_vert(model *m, const vert *v)
+{
+    if (m->nv == m->cap_v) {
+        m->cap_v = m->cap_v ? m->cap_v * 2 : 1024;
+        m->v = xrealloc(m->v, m->cap_v * sizeof *m->v);
+    }
+    m->v[m->nv++] = *v;
+}
+
+static void add_tri(model *m, const tri *t)
+{
+    if (m->nt == m->cap_t) {
+        m->cap_t = m->cap_t ? m->cap_t * 2 : 1024;
+        m->t = xrealloc(m->t, m->cap_t * sizeof *m->t);
+    }
+    m->t[m->nt++] = *t;
+}
+
+typedef struct mat4 {
+    double a[4][4];
+} mat4;
+
+static mat4 mat4_from_ai(const struct aiMatrix4x4 *m)
+{
+    mat4 r;
+    r.a[0][0] = m->a1; r.a[0][1] = m->a2; r.a[0][2] = m->a3; r.a[0][3] = m->a4;
+    r.a[1][0] = m->b1; r.a[1][1] = m->b2; r.a[1][2] = m->b3; r.a[1][3] = m->b4;
+    r.a[2][0] = m->c1; r.a[2][1] = m->c2; r.a[2][2] = m->c3; r.a[2][3] = m->c4;
+    r.a[3][0] = m->d1; r.a[3][1] = m->d2; r.a[3][2] = m->d3; r.a[3][3] = m->d4;
+    return r;
+}
+
+static mat4 mat4_mul(const mat4 *a, const mat4 *b)
+{
+    mat4 r;
+    int i, j, k;
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 4; j++) {
+            double s = 0;
+            for (k = 0; k < 4; k++)
+                s += a->a[i][k] * b->a[k][j];
+            r.a[i][j] = s;
+        }
+    return r;
+}
+
+static uint32_t color_from_floats(double r, double g, double b)
+{
+    double c[3];
+    uint32_t out = 0;
+    int i;
+    c[0] = r; c[1] = g; c[2] = b;
+    for (i = 0; i < 3; i++) {
+        double x = c[i];
+        long q;
+        if (!(x > 0))
+            x = 0;
+        if (x > 1)
+            x = 1;
+        q = lround(x * 255.0);
+        out = (out << 8) | (uint32_t)q;
+    }
+    return out;
+}
+
+static uint32_t material_color(const struct aiScene *s, unsigned mat_index)
+{
+    struct aiColor4D c;
+    if (mat_index >= s->mNumMaterials || !s->mMaterials || !s->mMaterials[mat_index])
+        return 0xFFFFFFu;
+    if (aiGetMaterialColor(s->mMaterials[mat_index], AI_MATKEY_COLOR_DIFFUSE, &c) ==
+        aiReturn_SUCCESS)
+        return color_from_floats(c.r, c.g, c.b);
+    return 0xFFFFFFu;
+}
+
+static void check_mesh(const struct aiMesh *me, unsigned idx)
+{
+    unsigned f;
+    if (me->mNumVertices > MAX_IN_VERTICES)
+        die(EXIT_LIMIT, "mesh %u declares %u vertices (more than %u): oversized model", idx,
+            me->mNumVertices, MAX_IN_VERTICES);
+    if (me->mNumFaces > MAX_IN_FACES)
+        die(EXIT_LIMIT, "mesh %u declares %u faces (more than %u): oversized model", idx,
+            me->mNumFaces, MAX_IN_FACES);
+    if (me->mNumVertices && !me->mVertices)
+        die(EXIT_INPUT, "mesh %u has no vertex positions", idx);
+    if (me->mNumFaces && !me->mFaces)
+        die(EXIT_INPUT, "mesh %u has no faces", idx);
+    for (f = 0; f < me->mNumFaces; f++) {
+        const struct aiFace *fc = &me->mFaces[f];
+        unsigned k;
+        if (fc->mNumIndices && !fc->mIndices)
+            die(EXIT_INPUT, "mesh %u face %u has no indices", idx, f);
+        for (k = 0; k < fc->mNumIndices; k++)
+            if (fc->mIndices[k] >= me->mNumVertices)
+                die(EXIT_INPUT, "mesh %u face %u: vertex index %u out of range (%u vertices)",
+                    idx, f, fc->mIndices[k], me->mNumVertices);
+    }
+}
+
+static void collect_node(const options *o, const struct aiScene *s, const struct aiNode *node,
+                         const mat4 *parent, model *m, int depth)
+{
+    mat4 local, world;
+    double nm[3][3]; /* cofactor matrix: transforms normals (inverse transpose up to scale) */
+    unsigned i, k;
+    if (depth > 256)
+        die(EXIT_INPUT, "node hierarchy deeper than 256 levels");
+    local = mat4_from_ai(&node->mTransformation);
+    world = mat4_mul(parent, &local);
+    for (i = 0; i < 3; i++)
+        for (k = 0; k < 3; k++) {
+            int i1 = (int)(i + 1) % 3, i2 = (int)(i + 2) % 3;
+            int k1 = (int)(k + 1) % 3, k2 = (int)(k + 2) % 3;
+            nm[i][k] = world.a[i1][k1] * world.a[i2][k2] - world.a[i1][k2] * world.a[i2][k1];
+        }
+    for (i = 0; i < node->mNumMeshes; i++) {
+        const struct aiMesh *me;
+        size_t base = m->nv;
+        unsigned vi, f;
+        uint32_t mcol;
+        if (!node->mMeshes || node->mMeshes[i] >= s->mNumMeshes)
+            die(EXIT_INPUT, "node refers to a missing mesh");
+        me = s->mMeshes[node->mMeshes[i]];
+        mcol = material_color(s, me->mMaterialIndex);
+        for (vi = 0; vi < me->mNumVertices; vi++) {
+            vert v;
+            const struct aiVector3D *p = &me->mVertices[vi];
+            int r;
+            memset(&v, 0, sizeof v);
+            for (r = 0; r < 3; r++)
+                v.p[r] = world.a[r][0] * p->x + world.a[r][1] * p->y + world.a[r][2] * p->z +
+                         world.a[r][3];
+            if (o->normals == NRM_FILE && me->mNormals) {
+                const struct aiVector3D *n = &me->mNormals[vi];
+                double len;
+                for (r = 0; r < 3; r++)
+                    v.n[r] = nm[r][0] * n->x + nm[r][1] * n->y + nm[r][2] * n->z;
+                len = sqrt(v.n[0] * v.n[0] + v.n[1] * v.n[1] + v.n[2] * v.n[2]);
+                for (r = 0; r < 3; r++)
+                    v.n[r] = len > 0 ? v.n[r] / len : 0;
+            }
+            if (o->colors == COL_VERTEX) {
+                if (me->mColors[0]) {
+                    v.c[0] = me->mColors[0][vi].r;
+                    v.c[1] = me->mColors[0][vi].g;
+                    v.c[2] = me->mColors[0][vi].b;
+                } else {
+                    v.c[0] = (double)((mcol >> 16) & 255) / 255.0;
+                    v.c[1] = (double)((mcol >> 8) & 255) / 255.0;
+                    v.c[2] = (double)(mcol & 255) / 255.0;
+                }
+            }
+            add_vert(m, &v);
+        }
+        for (f = 0; f < me->mNumFaces; f++) {
+            const struct aiFace *fc = &me->mFaces[f];
+            unsigned k2;
+            if (fc->mNumIndices < 3) {
+                m->skipped_prims++;
+                continue;
+            }
+            /* Triangulated by assimp; a fan covers anything left (convex). */
+            for (k2 = 1; k2 + 1 < fc->mNumIndices; k2++) {
+                tri t;
+                t.v[0] = (uint32_t)(base + fc->mIndices[0]);
+                t.v[1] = (uint32_t)(base + fc->mIndices[k2]);
+                t.v[2] = (uint32_t)(base + fc->mIndices[k2 + 1]);
+                t.color = mcol;
+                add_tri(m, &t);
+            }
+        }
+    }
+    for (i = 0; i < node->mNumChildren; i++)
+        if (node->mChildren && node->mChildren[i])
+            collect_node(o, s, node->mChildren[i], &world, m, depth + 1);
+}
+
+static void import_model(const options *o, model *m)
+{
+    const struct aiScene *s;
+    struct aiLogStream ls;
+    mat4 id;
+    unsigned i;
+    FILE *probe;
+    struct stat st;
+    rlim_t limit = 0;
+
+    probe = fopen(o->input, "rb");
+    if (!probe)
+        die(EXIT_INPUT, "cannot open: %s", strerror(errno));
+    if (fgetc(probe) == EOF) {
+        fclose(probe);
+        die(EXIT_INPUT, "the file is empty");
+    }
+    fclose(probe);
+    /* A corrupt header can make a loader reserve hundreds of gigabytes (see
+     * assimp's invalid/OutOfMemory.off). Cap the address space so that such an
+     * allocation fails at once and the importer reports it. */
+    if (o->mem_limit_mb < 0 && stat(o->input, &st) == 0)
+        limit = ((rlim_t)2048 << 20) + (rlim_t)st.st_size * 256u;
+    else if (o->mem_limit_mb > 0)
+        limit = (rlim_t)o->mem_limit_mb << 20;
+    if (limit) {
+        struct rlimit rl;
+        if (getrlimit(RLIMIT_AS, &rl) == 0 && (rl.rlim_cur == RLIM_INFINITY || rl.rlim_cur > limit)) {
+            rl.rlim_cur = limit;
+            (void)setrlimit(RLIMIT_AS, &rl);
+        }
+    }
+
+    ls.callback = log_cb;
+    ls.user = NULL;
+    aiAttachLogStream(&ls);
+    s = aiImportFile(o->input, aiProcess_ValidateDataStructure);
+    if (!s) {
+        const char *err = aiGetErrorString();
+        if (strstr(err, "bad_alloc") || strstr(err, "memory"))
+            die(EXIT_LIMIT, "cannot read the model: %s (it asks for more memory than the "
+                            "%lu MB limit: a corrupt header or an oversized model; see "
+                            "--mem-limit)", err, (unsigned long)(limit >> 20));
+        die(EXIT_INPUT, "cannot read the model: %s", err);
+    }
+    if (g_log_error_count && !o->lenient) {
+        aiReleaseImport(s);
+        die(EXIT_INPUT, "the importer reported problems (use --lenient to convert anyway):%s",
+            g_log_errors);
+    }
+    if (s->mFlags & AI_SCENE_FLAGS_INCOMPLETE)
+        die(EXIT_INPUT, "the model is incomplete (no geometry was read)");
+    if (!s->mNumMeshes || !s->mMeshes)
+        die(EXIT_INPUT, "the model holds no meshes");
+    for (i = 0; i < s->mNumMeshes; i++) {
+        if (!s->mMeshes[i])
+            die(EXIT_INPUT, "mesh %u is missing", i);
+        check_mesh(s->mMeshes[i], i);
+    }
+    /* Safe now: the structure is validated. Triangulate concave polygons. */
+    s = aiApplyPostProcessing(s, aiProcess_Triangulate);
+    if (!s)
+        die(EXIT_INPUT, "triangulation failed: %s", aiGetErrorString());
+    if (g_log_error_count && !o->lenient)
+        die(EXIT_INPUT, "the importer reported problems (use --lenient to convert anyway):%s",
+            g_log_errors);
+    memset(&id, 0, sizeof id);
+    for (i = 0; i < 4; i++)
+        id.a[i][i] = 1;
+    if (!s->mRootNode)
+        die(EXIT_INPUT, "the model has no scene graph");
+    collect_node(o, s, s->mRootNode, &id, m, 0);
+    aiReleaseImport(s);
+    aiDetachAllLogStreams();
+    for (i = 0; i < m->nv; i++) {
+        int r;
+        for (r = 0; r < 3; r++)
+            if (!isfinite(m->v[i].p[r]))
+                die(EXIT_INPUT, "vertex %u has a non-finite coordinate", i);
+    }
+    if (m->nt == 0) {
+        if (m->skipped_prims)
+            die(EXIT_INPUT, "the model has no triangles (only %zu points/lines)",
+                m->skipped_prims);
+        die(EXIT_INPUT, "the model has no triangles");
+    }
+    if (m->skipped_prims)
+        warn(o, "skipped %zu point/line primitives", m->skipped_prims);
+}
+
+/* ------------------------------------------------------------------ */
+/* Vertex merging (exact key on the output attributes)                  */
+/* ------------------------------------------------------------------ */
+
+static uint64_t hash_bytes(const void *p, size_t n)
+{
+    const unsigned char *b = p;
+    uint64_t h = 1469598103934665603ull;
+    size_t i;
+    for (i = 0; i < n; i++) {
+        h ^= b[i];
+        h *= 1099511628211ull;
+    }
+    return h;
+}
+
+static size_t vert_key(const options *o, const vert *v, double key[9])
+{
+    size_t n = 0;
+    int r;
+    for (r = 0; r < 3; r++)
+        key[n++] = v->p[r] == 0 ? 0.0 : v->p[r]; /* -0 == +0 */
+    if (o->normals == NRM_FILE)
+        for (r = 0; r < 3; r++)
+            key[n++] = v->n[r] == 0 ? 0.0 : v->n[r];
+    if (o->colors == COL_VERTEX)
+        for (r = 0; r < 3; r++)
+            key[n++] = v->c[r] == 0 ? 0.0 : v->c[r];
+    return n;
+}
+
+/* Merges vertices with identical keys and drops unreferenced ones.
+ * Returns the number of degenerate triangles removed. */
+static void merge_vertices(const options *o, model *m, int merge)
+{
+    size_t cap = 1, i, nv = 0, nt = 0;
+    uint32_t *table, *remap;
+    vert *out;
+    while (cap < m->nv * 2 + 2)
+        cap <<= 1;
+    table = xrealloc(NULL, cap * sizeof *table);
+    for (i = 0; i < cap; i++)
+        table[i] = UINT32_MAX;
+    remap = xrealloc(NULL, (m->nv ? m->nv : 1) * sizeof *remap);
+    out = xrealloc(NULL, (m->nv ? m->nv : 1) * sizeof *out);
+    for (i = 0; i < m->nv; i++)
+        remap[i] = UINT32_MAX;
+    /* Visit vertices in the order triangles reference them: deterministic and
+     * drops unreferenced vertices. */
+    for (i = 0; i < m->nt; i++) {
+        int c;
+        for (c = 0; c < 3; c++) {
+            uint32_t vi = m->t[i].v[c];
+            double key[9], key2[9];
+            size_t kn, slot;
+            if (remap[vi] != UINT32_MAX)
+                continue;
+            if (!merge) {
+                out[nv] = m->v[vi];
+                remap[vi] = (uint32_t)nv++;
+                continue;
+            }
+            kn = vert_key(o, &m->v[vi], key);
+            slot = (size_t)hash_bytes(key, kn * sizeof(double)) & (cap - 1);
+            for (;;) {
+                uint32_t e = table[slot];
+                if (e == UINT32_MAX) {
+                    table[slot] = (uint32_t)nv;
+                    out[nv] = m->v[vi];
+                    remap[vi] = (uint32_t)nv++;
+                    break;
+                }
+                vert_key(o, &out[e], key2);
+                if (memcmp(key, key2, kn * sizeof(double)) == 0) {
+                    remap[vi] = e;
+                    break;
+                }
+                slot = (slot + 1) & (cap - 1);
+            }
+        }
+    }
+    for (i = 0; i < m->nt; i++) {
+        tri t = m->t[i];
+        t.v[0] = remap[t.v[0]];
+        t.v[1] = remap[t.v[1]];
+        t.v[2] = remap[t.v[2]];
+        if (t.v[0] == t.v[1] || t.v[1] == t.v[2] || t.v[0] == t.v[2]) {
+            m->degenerate++;
+            continue;
+        }
+        m->t[nt++] = t;
+    }
+    free(m->v);
+    free(table);
+    free(remap);
+    m->v = out;
+    m->nv = nv;
+    m->cap_v = nv;
+    m->nt = nt;
+}
+
+/* ------------------------------------------------------------------ */
+/* Decimation: uniform-grid vertex clustering                           */
+/* ------------------------------------------------------------------ */
+
+static void bbox(const model *m, double lo[3], double hi[3])
+{
+    size_t i;
+    int r;
+    for (r = 0; r < 3; r++) {
+        lo[r] = m->nv ? m->v[0].p[r] : 0;
+        hi[r] = lo[r];
+    }
+    for (i = 1; i < m->nv; i++)
+        for (r = 0; r < 3; r++) {
+            if (m->v[i].p[r] < lo[r])
+                lo[r] = m->v[i].p[r];
+            if (m->v[i].p[r] > hi[r])
+                hi[r] = m->v[i].p[r];
+        }
+}
+
+typedef struct cell_entry {
+    uint64_t key;
+    uint32_t id;
+} cell_entry;
+
+/* Clusters vertices on a grid with `res` cells along the longest bbox side.
+ * Writes the result to *out (positions = cluster means). */
+static void cluster(const options *o, const model *m, unsigned long res, model *out)
+{
+    double lo[3], hi[3], ext = 0, cell;
+    size_t cap = 1, i, nv = 0;
+    cell_entry *table;
+    uint32_t *remap, *count;
+    int r;
+    bbox(m, lo, hi);
+    for (r = 0; r < 3; r++)
+        if (hi[r] - lo[r] > ext)
+            ext = hi[r] - lo[r];
+    cell = ext > 0 ? ext / (double)res : 1.0;
+    while (cap < m->nv * 2 + 2)
+        cap <<= 1;
+    table = xrealloc(NULL, cap * sizeof *table);
+    for (i = 0; i < cap; i++)
+        table[i].id = UINT32_MAX;
+    remap = xrealloc(NULL, (m->nv ? m->nv : 1) * sizeof *remap);
+    count = xrealloc(NULL, (m->nv ? m->nv : 1) * sizeof *count);
+    memset(out, 0, sizeof *out);
+    out->v = xrealloc(NULL, (m->nv ? m->nv : 1) * sizeof *out->v);
+    out->cap_v = m->nv;
+    for (i = 0; i < m->nv; i++) {
+        uint64_t c[3], key;
+        size_t slot;
+        for (r = 0; r < 3; r++) {
+            double q = floor((m->v[i].p[r] - lo[r]) / cell);
+            if (q < 0)
+                q = 0;
+            if (q > (double)res - 1)
+                q = (double)res - 1;
+            c[r] = (uint64_t)q;
+        }
+        key = (c[0] << 42) | (c[1] << 21) | c[2];
+        slot = (size_t)hash_bytes(&key, sizeof key) & (cap - 1);
+        while (table[slot].id != UINT32_MAX && table[slot].key != key)
+            slot = (slot + 1) & (cap - 1);
+        if (table[slot].id == UINT32_MAX) {
+            table[slot].key = key;
+            table[slot].id = (uint32_t)nv;
+            memset(&out->v[nv], 0, sizeof out->v[nv]);
+            count[nv] = 0;
+            nv++;
+        }
+        {
+            uint32_t id = table[slot].id;
+            vert *d = &out->v[id];
+            for (r = 0; r < 3; r++) {
+                d->p[r] += m->v[i].p[r];
+                d->n[r] += m->v[i].n[r];
+                d->c[r] += m->v[i].c[r];
+            }
+            count[id]++;
+            remap[i] = id;
+        }
+    }
+    for (i = 0; i < nv; i++) {
+        double len;
+        for (r = 0; r < 3; r++) {
+            out->v[i].p[r] /= count[i];
+            out->v[i].c[r] /= count[i];
+        }
+        len = sqrt(out->v[i].n[0] * out->v[i].n[0] + out->v[i].n[1] * out->v[i].n[1] +
+                   out->v[i].n[2] * out->v[i].n[2]);
+        for (r = 0; r < 3; r++)
+            out->v[i].n[r] = len > 0 ? out->v[i].n[r] / len : 0;
+    }
+    out->nv = nv;
+    for (i = 0; i < m->nt; i++) {
+        tri t = m->t[i];
+        t.v[0] = remap[t.v[0]];
+        t.v[1] = remap[t.v[1]];
+        t.v[2] = remap[t.v[2]];
+        if (t.v[0] == t.v[1] || t.v[1] == t.v[2] || t.v[0] == t.v[2])
+            continue;
+        add_tri(out, &t);
+    }
+    (void)o;
+    free(table);
+    free(remap);
+    free(count);
+    /* Drop vertices no longer referenced. */
+    {
+        options plain = *o;
+        plain.normals = NRM_NONE;
+        plain.colors = COL_NONE;
+        merge_vertices(&plain, out, 0);
+    }
+}
+
+static void free_model(model *m)
+{
+    free(m->v);
+    free(m->t);
+    memset(m, 0, sizeof *m);
+}
+
+static void decimate(const options *o, model *m)
+{
+    unsigned long lim_t = o->max_tris ? o->max_tris : MAX_OUT;
+    unsigned long lim_v = o->max_verts ? o->max_verts : MAX_OUT;
+    unsigned long lo = 1, hi = 1u << 20, best = 0;
+    model best_m;
+    if (m->nt <= lim_t && m->nv <= lim_v)
+        return;
+    memset(&best_m, 0, sizeof best_m);
+    /* Largest grid resolution whose result fits (counts grow with resolution,
+     * nearly monotonically). */
+    while (lo <= hi) {
+        unsigned long mid = lo + (hi - lo) / 2;
+        model t;
+        cluster(o, m, mid, &t);
+        if (t.nt <= lim_t && t.nv <= lim_v && t.nt > 0) {
+            free_model(&best_m);
+            best_m = t;
+            best = mid;
+            lo = mid + 1;
+        } else {
+            free_model(&t);
+            hi = mid - 1;
+        }
+    }
+    if (!best)
+        die(EXIT_LIMIT, "cannot decimate %zu triangles / %zu vertices to the limits "
+                        "(%lu triangles, %lu vertices)", m->nt, m->nv, lim_t, lim_v);
+    warn(o, "decimated %zu triangles / %zu vertices to %zu / %zu (grid %lu)", m->nt, m->nv,
+         best_m.nt, best_m.nv, best);
+    free_model(m);
+    *m = best_m;
+}
+
+/* ------------------------------------------------------------------ */
+/* Output                                                               */
+/* ------------------------------------------------------------------ */
+
+static uint32_t index_color(uint32_t i)
+{
+    /* A fixed integer hash of the triangle index; channels kept >= 0x30 so no
+     * triangle is black (the default background). */
+    uint32_t x = i + 0x9E3779B9u;
+    x ^= x >> 16;
+    x *= 0x7FEB352Du;
+    x ^= x >> 15;
+    x *= 0x846CA68Bu;
+    x ^= x >> 16;
+    return (x & 0xFFFFFFu) | 0x303030u;
+}
+
+static int16_t q14(double x)
+{
+    long q = lround(x * 16384.0);
+    if (q > 16384)
+        q = 16384;
+    if (q < -16384)
+        q = -16384;
+    return (int16_t)q;
+}
+
+static void face_normal(const model *m, const tri *t, double n[3])
+{
+    const double *a = m->v[t->v[0]].p, *b = m->v[t->v[1]].p, *c = m->v[t->v[2]].p;
+    double e1[3], e2[3];
+    int r;
+    for (r = 0; r < 3; r++) {
+        e1[r] = b[r] - a[r];
+        e2[r] = c[r] - a[r];
+    }
+    n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+}
+
+static void normalize3(double n[3])
+{
+    double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    int r;
+    for (r = 0; r < 3; r++)
+        n[r] = len > 0 ? n[r] / len : 0;
+}
+
+static int valid_ident(const char *s)
+{
+    if (!*s || !(isalpha((unsigned char)*s) || *s == '_'))
+        return 0;
+    for (; *s; s++)
+        if (!(isalnum((unsigned char)*s) || *s == '_'))
+            return 0;
+    return 1;
+}
+
+static char *name_from_path(const char *path)
+{
+    const char *b = strrchr(path, '/');
+    const char *dot;
+    size_t n, i, k = 0;
+    char *out;
+    b = b ? b + 1 : path;
+    dot = strrchr(b, '.');
+    n = dot && dot != b ? (size_t)(dot - b) : strlen(b);
+    out = xrealloc(NULL, n + 3);
+    if (n == 0 || isdigit((unsigned char)b[0]))
+        out[k++] = 'm';
+    for (i = 0; i < n; i++) {
+        unsigned char ch = (unsigned char)b[i];
+        out[k++] = (char)(isalnum(ch) ? tolower(ch) : '_');
+    }
+    out[k] = 0;
+    return out;
+}
+
+typedef struct emitter {
+    FILE *f;
+    int col;
+} emitter;
+
+static void emit_begin(emitter *e, FILE *f, const char *decl)
+{
+    e->f = f;
+    e->col = 0;
+    fprintf(f, "%s = {\n", decl);
+}
+
+static void emit_val(emitter *e, const char *s)
+{
+    size_t len = strlen(s);
+    if (e->col == 0) {
+        fputs("   ", e->f);
+        e->col = 3;
+    }
+    if (e->col + (int)len + 2 > 96) {
+        fputs("\n   ", e->f);
+        e->col = 3;
+    }
+    fprintf(e->f, " %s,", s);
+    e->col += (int)len + 2;
+}
+
+static void emit_end(emitter *e)
+{
+    fputs(e->col ? "\n};\n\n" : "};\n\n", e->f);
+}
+
+static void write_files(const options *o, const model *m, const char *name, long qscale,
+                        const double lo[3], const double hi[3], double radius,
+                        const double xform_scale, const double xform_shift[3])
+{
+    char *cpath, *hpath, *guard, *upper, buf[64];
+    const char *hname;
+    FILE *fc, *fh;
+    size_t len = strlen(o->output), i;
+    int r, has_fc = 0, has_vc = 0, has_fn = 0, has_vn = 0;
+    emitter e;
+    double *vn = NULL;
+
+    cpath = xrealloc(NULL, len + 3);
+    hpath = xrealloc(NULL, len + 3);
+    sprintf(cpath, "%s.c", o->output);
+    sprintf(hpath, "%s.h", o->output);
+    hname = strrchr(hpath, '/');
+    hname = hname ? hname + 1 : hpath;
+    guard = xrealloc(NULL, strlen(name) + 16);
+    sprintf(guard, "ZSPAN_MESH_%s_H", name);
+    for (i = 0; guard[i]; i++)
+        guard[i] = (char)toupper((unsigned char)guard[i]);
+    upper = xrealloc(NULL, strlen(name) + 1);
+    for (i = 0; name[i]; i++)
+        upper[i] = (char)toupper((unsigned char)name[i]);
+    upper[i] = 0;
+
+    fh = fopen(hpath, "w");
+    if (!fh)
+        die(EXIT_IO, "cannot write %s: %s", hpath, strerror(errno));
+    fprintf(fh,
+            "/* Generated by zspan-meshc " MESHC_VERSION " from %s. Do not edit. */\n"
+            "#ifndef %s\n#define %s\n\n#include \"zspan/zspan.h\"\n\n"
+            "#define %s_VERTEX_COUNT %zuu\n#define %s_TRIANGLE_COUNT %zuu\n"
+            "/* Q16.16 scale of the int16 positions. */\n#define %s_SCALE %ld\n\n"
+            "extern const zs_mesh %s;\n\n#endif\n",
+            g_input, guard, guard, upper, m->nv, upper, m->nt, upper, qscale, name);
+    if (fclose(fh) != 0)
+        die(EXIT_IO, "cannot write %s", hpath);
+
+    fc = fopen(cpath, "w");
+    if (!fc)
+        die(EXIT_IO, "cannot write %s: %s", cpath, strerror(errno));
+    fprintf(fc, "/* Generated by zspan-meshc " MESHC_VERSION " from %s. Do not edit.\n", g_input);
+    fprintf(fc, " * %zu vertices, %zu triangles; model = int16 * %ld / 65536.\n", m->nv, m->nt,
+            qscale);
+    fprintf(fc, " * Source bounding box before transform: (%.6g %.6g %.6g) .. (%.6g %.6g %.6g)\n",
+            lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
+    fprintf(fc, " * Transform applied: p' = (p - (%.9g %.9g %.9g)) * %.9g; radius after: %.6g\n",
+            xform_shift[0], xform_shift[1], xform_shift[2], xform_scale, radius);
+    fprintf(fc, " */\n#include \"%s\"\n\n", hname);
+
+    sprintf(buf, "static const int16_t %s_positions[%zu]", name, m->nv * 3);
+    emit_begin(&e, fc, buf);
+    for (i = 0; i < m->nv; i++)
+        for (r = 0; r < 3; r++) {
+            double q = m->v[i].p[r] * 65536.0 / (double)qscale;
+            long qi = lround(q);
+            char s[16];
+            if (qi > 32767)
+                qi = 32767;
+            if (qi < -32767)
+                qi = -32767;
+            sprintf(s, "%ld", qi);
+            emit_val(&e, s);
+        }
+    emit_end(&e);
+
+    sprintf(buf, "static const uint16_t %s_indices[%zu]", name, m->nt * 3);
+    emit_begin(&e, fc, buf);
+    for (i = 0; i < m->nt; i++)
+        for (r = 0; r < 3; r++) {
+            char s[16];
+            sprintf(s, "%u", (unsigned)m->t[i].v[o->flip && r ? 3 - r : r]);
+            emit_val(&e, s);
+        }
+    emit_end(&e);
+
+    if (o->colors == COL_MATERIAL || o->colors == COL_INDEX) {
+        int uniform = 1;
+        for (i = 1; i < m->nt; i++)
+            if (m->t[i].color != m->t[0].color)
+                uniform = 0;
+        if (o->colors == COL_INDEX || !uniform) {
+            has_fc = 1;
+            sprintf(buf, "static const zs_color %s_face_colors[%zu]", name, m->nt);
+            emit_begin(&e, fc, buf);
+            for (i = 0; i < m->nt; i++) {
+                char s[16];
+                uint32_t c = o->colors == COL_INDEX ? index_color((uint32_t)i) : m->t[i].color;
+                sprintf(s, "0x%06lX", (unsigned long)c);
+                emit_val(&e, s);
+            }
+            emit_end(&e);
+        }
+    }
+    if (o->colors == COL_VERTEX) {
+        has_vc = 1;
+        sprintf(buf, "static const zs_color %s_vertex_colors[%zu]", name, m->nv);
+        emit_begin(&e, fc, buf);
+        for (i = 0; i < m->nv; i++) {
+            char s[16];
+            sprintf(s, "0x%06lX",
+                    (unsigned long)color_from_floats(m->v[i].c[0], m->v[i].c[1], m->v[i].c[2]));
+            emit_val(&e, s);
+        }
+        emit_end(&e);
+    }
+    if (o->normals == NRM_FACE) {
+        has_fn = 1;
+        sprintf(buf, "static const int16_t %s_face_normals[%zu]", name, m->nt * 3);
+        emit_begin(&e, fc, buf);
+        for (i = 0; i < m->nt; i++) {
+            double n[3];
+            face_normal(m, &m->t[i], n);
+            if (o->flip)
+                for (r = 0; r < 3; r++)
+                    n[r] = -n[r];
+            normalize3(n);
+            for (r = 0; r < 3; r++) {
+                char s[16];
+                sprintf(s, "%d", q14(n[r]));
+                emit_val(&e, s);
+            }
+        }
+        emit_end(&e);
+    }
+    if (o->normals == NRM_SMOOTH || o->normals == NRM_FILE) {
+        has_vn = 1;
+        vn = xrealloc(NULL, m->nv * 3 * sizeof *vn);
+        if (o->normals == NRM_FILE) {
+            for (i = 0; i < m->nv; i++)
+                for (r = 0; r < 3; r++)
+                    vn[i * 3 + (size_t)r] = o->flip ? -m->v[i].n[r] : m->v[i].n[r];
+        } else {
+            memset(vn, 0, m->nv * 3 * sizeof *vn);
+            for (i = 0; i < m->nt; i++) {
+                double n[3]; /* area weighted */
+                int c;
+                face_normal(m, &m->t[i], n);
+                for (c = 0; c < 3; c++)
+                    for (r = 0; r < 3; r++)
+                        vn[m->t[i].v[c] * 3 + (size_t)r] += o->flip ? -n[r] : n[r];
+            }
+            for (i = 0; i < m->nv; i++)
+                normalize3(&vn[i * 3]);
+        }
+        sprintf(buf, "static const int16_t %s_vertex_normals[%zu]", name, m->nv * 3);
+        emit_begin(&e, fc, buf);
+        for (i = 0; i < m->nv * 3; i++) {
+            char s[16];
+            sprintf(s, "%d", q14(vn[i]));
+            emit_val(&e, s);
+        }
+        emit_end(&e);
+        free(vn);
+    }
+
+    fprintf(fc, "const zs_mesh %s = {\n", name);
+    fprintf(fc, "    %s_positions,\n    %s_indices,\n", name, name);
+    if (has_fc)
+        fprintf(fc, "    %s_face_colors,\n", name);
+    else
+        fprintf(fc, "    NULL, /* face_colors */\n");
+    if (has_vc)
+        fprintf(fc, "    %s_vertex_colors,\n", name);
+    else
+        fprintf(fc, "    NULL, /* vertex_colors */\n");
+    if (has_fn)
+        fprintf(fc, "    %s_face_normals,\n", name);
+    else
+        fprintf(fc, "    NULL, /* face_normals */\n");
+    if (has_vn)
+        fprintf(fc, "    %s_vertex_normals,\n", name);
+    else
+        fprintf(fc, "    NULL, /* vertex_normals */\n");
+    {
+        uint32_t col = o->base_color;
+        if (o->colors == COL_MATERIAL && !has_fc && m->nt)
+            col = m->t[0].color;
+        fprintf(fc, "    %ld, /* scale, Q16.16 */\n    %zuu, /* vertex_count */\n"
+                    "    %zuu, /* triangle_count */\n    0x%06lXu /* color */\n};\n",
+                qscale, m->nv, m->nt, (unsigned long)col);
+    }
+    if (fclose(fc) != 0)
+        die(EXIT_IO, "cannot write %s", cpath);
+    free(cpath);
+    free(hpath);
+    free(guard);
+    free(upper);
+}
+
+/* ------------------------------------------------------------------ */
+/* Command line                                                         */
+/* ------------------------------------------------------------------ */
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+        "usage: zspan-meshc [options] MODEL\n"
+        "Converts any model assimp reads into NAME.c + NAME.h holding a zs_mesh\n"
+        "(int16 positions with a Q16.16 scale, uint16 indices).\n\n"
+        "  -o, --output BASE     write BASE.c and BASE.h (default: ./NAME)\n"
+        "  -n, --name NAME       C identifier of the zs_mesh (default: from the file name)\n"
+        "      --center          move the bounding-box centre to the origin\n"
+        "      --fit R           scale so the largest vertex distance from the origin is R\n"
+        "      --normalize       same as --center --fit 1\n"
+        "      --scale S         multiply positions by S (after --center/--fit)\n"
+        "      --quant-scale Q   use this Q16.16 scale (integer > 0) instead of the\n"
+        "                        smallest one that keeps positions within int16\n"
+        "      --max-triangles N decimate (vertex clustering) to at most N triangles\n"
+        "      --max-vertices N  decimate to at most N vertices (both limits <= 65535)\n"
+        "      --colors SRC      none (default): one colour (--color) for the mesh\n"
+        "                        material: per-face colour from the material diffuse colour\n"
+        "                        vertex: per-vertex colours from the file (else material)\n"
+        "                        index: per-face colour from a fixed hash of the face index\n"
+        "      --color RRGGBB    the mesh colour (default FFFFFF)\n"
+        "      --normals KIND    none (default), face, smooth (area-weighted per vertex),\n"
+        "                        file (per vertex from the model; keeps split vertices)\n"
+        "      --no-merge        keep the importer's vertices (default: merge vertices\n"
+        "                        with identical positions and output attributes)\n"
+        "      --flip-winding    reverse every triangle (front faces must be CCW)\n"
+        "      --lenient         convert even if the importer reported errors\n"
+        "      --info            print statistics only; write nothing\n"
+        "      --mem-limit MB    address-space limit while importing (default 2048 MB +\n"
+        "                        256 x the file size; 0 = no limit)\n"
+        "  -q, --quiet           no warnings\n"
+        "  -h, --help            this text\n\n"
+        "Exit status: 0 ok, 2 usage, 3 unreadable/invalid/empty model, 4 over a limit,\n"
+        "5 cannot write the output.\n");
+}
+
+static unsigned long parse_count(const char *opt, const char *s)
+{
+    char *end;
+    unsigned long v;
+    errno = 0;
+    v = strtoul(s, &end, 10);
+    if (errno || *end || v == 0 || v > MAX_OUT || s[0] == '-') {
+        fprintf(stderr, "%s: error: %s needs an integer in 1..%u, got '%s'\n", g_prog, opt,
+                MAX_OUT, s);
+        exit(EXIT_USAGE);
+    }
+    return v;
+}
+
+static double parse_double(const char *opt, const char *s)
+{
+    char *end;
+    double v;
+    errno = 0;
+    v = strtod(s, &end);
+    if (errno || *end || !isfinite(v) || v <= 0) {
+        fprintf(stderr, "%s: error: %s needs a positive number, got '%s'\n", g_prog, opt, s);
+        exit(EXIT_USAGE);
+    }
+    return v;
+}
+
+static void parse_args(int argc, char **argv, options *o)
+{
+    int i;
+    memset(o, 0, sizeof *o);
+    o->scale = 1.0;
+    o->merge = 1;
+    o->base_color = 0xFFFFFFu;
+    o->fit_radius = 1.0;
+    o->mem_limit_mb = -1;
+    for (i = 1; i < argc; i++) {
+        const char *a = argv[i];
+#define NEED_ARG()                                                                         \
+    do {                                                                                   \
+        if (i + 1 >= argc) {                                                               \
+            fprintf(stderr, "%s: error: %s needs an argument\n", g_prog, a);               \
+            exit(EXIT_USAGE);                                                              \
+        }                                                                                  \
+    } while (0)
+        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+            usage(stdout);
+            exit(0);
+        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
+            NEED_ARG();
+            o->output = argv[++i];
+        } else if (!strcmp(a, "-n") || !strcmp(a, "--name")) {
+            NEED_ARG();
+            o->name = argv[++i];
+        } else if (!strcmp(a, "--center")) {
+            o->center = 1;
+        } else if (!strcmp(a, "--fit")) {
+            NEED_ARG();
+            o->fit = 1;
+            o->fit_radius = parse_double(a, argv[++i]);
+        } else if (!strcmp(a, "--normalize")) {
+            o->center = 1;
+            o->fit = 1;
+            o->fit_radius = 1.0;
+        } else if (!strcmp(a, "--scale")) {
+            NEED_ARG();
+            o->scale = parse_double(a, argv[++i]);
+        } else if (!strcmp(a, "--quant-scale")) {
+            char *end;
+            NEED_ARG();
+            errno = 0;
+            o->quant_scale = strtol(argv[++i], &end, 0);
+            if (errno || *end || o->quant_scale <= 0 || o->quant_scale > 0x7FFFFFFF) {
+                fprintf(stderr, "%s: error: --quant-scale needs a positive integer\n", g_prog);
+                exit(EXIT_USAGE);
+            }
+        } else if (!strcmp(a, "--max-triangles")) {
+            NEED_ARG();
+            o->max_tris = parse_count(a, argv[++i]);
+        } else if (!strcmp(a, "--max-vertices")) {
+            NEED_ARG();
+            o->max_verts = parse_count(a, argv[++i]);
+        } else if (!strcmp(a, "--colors") || !strcmp(a, "--colours")) {
+            const char *v;
+            NEED_ARG();
+            v = argv[++i];
+            if (!strcmp(v, "none"))
+                o->colors = COL_NONE;
+            else if (!strcmp(v, "material"))
+                o->colors = COL_MATERIAL;
+            else if (!strcmp(v, "vertex"))
+                o->colors = COL_VERTEX;
+            else if (!strcmp(v, "index"))
+                o->colors = COL_INDEX;
+            else {
+                fprintf(stderr, "%s: error: --colors: unknown source '%s' "
+                                "(none, material, vertex, index)\n", g_prog, v);
+                exit(EXIT_USAGE);
+            }
+        } else if (!strcmp(a, "--color") || !strcmp(a, "--colour")) {
+            char *end;
+            const char *v;
+            unsigned long c;
+            NEED_ARG();
+            v = argv[++i];
+            if (v[0] == '#')
+                v++;
+            errno = 0;
+            c = strtoul(v, &end, 16);
+            if (errno || *end || strlen(v) != 6) {
+                fprintf(stderr, "%s: error: --color needs RRGGBB hex, got '%s'\n", g_prog, v);
+                exit(EXIT_USAGE);
+            }
+            o->base_color = (uint32_t)c;
+        } else if (!strcmp(a, "--normals")) {
+            const char *v;
+            NEED_ARG();
+            v = argv[++i];
+            if (!strcmp(v, "none"))
+                o->normals = NRM_NONE;
+            else if (!strcmp(v, "face"))
+                o->normals = NRM_FACE;
+            else if (!strcmp(v, "smooth"))
+                o->normals = NRM_SMOOTH;
+            else if (!strcmp(v, "file"))
+                o->normals = NRM_FILE;
+            else {
+                fprintf(stderr, "%s: error: --normals: unknown kind '%s' "
+                                "(none, face, smooth, file)\n", g_prog, v);
+                exit(EXIT_USAGE);
+            }
+        } else if (!strcmp(a, "--mem-limit")) {
+            char *end;
+            NEED_ARG();
+            errno = 0;
+            o->mem_limit_mb = strtol(argv[++i], &end, 10);
+            if (errno || *end || o->mem_limit_mb < 0) {
+                fprintf(stderr, "%s: error: --mem-limit needs a size in MB\n", g_prog);
+                exit(EXIT_USAGE);
+            }
+        } else if (!strcmp(a, "--no-merge")) {
+            o->merge = 0;
+        } else if (!strcmp(a, "--flip-winding")) {
+            o->flip = 1;
+        } else if (!strcmp(a, "--lenient")) {
+            o->lenient = 1;
+        } else if (!strcmp(a, "--info")) {
+            o->info_only = 1;
+        } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
+            o->quiet = 1;
+        } else if (a[0] == '-' && a[1]) {
+            fprintf(stderr, "%s: error: unknown option '%s' (see --help)\n", g_prog, a);
+            exit(EXIT_USAGE);
+        } else if (!o->input) {
+            o->input = a;
+        } else {
+            fprintf(stderr, "%s: error: more than one input model ('%s', '%s')\n", g_prog,
+                    o->input, a);
+            exit(EXIT_USAGE);
+        }
+#undef NEED_ARG
+    }
+    if (!o->input) {
+        usage(stderr);
+        exit(EXIT_USAGE);
+    }
+    if (o->name && !valid_ident(o->name)) {
+        fprintf(stderr, "%s: error: --name '%s' is not a C identifier\n", g_prog, o->name);
+        exit(EXIT_USAGE);
+    }
+}
+
+int main(int argc, char **argv)
+{
+    options o;
+    model m;
+    char *name;
+    double lo[3], hi[3], shift[3] = {0, 0, 0}, k = 1.0, radius = 0, maxabs = 0;
+    size_t i, raw_v, raw_t;
+    long qscale;
+    int r;
+
+    parse_args(argc, argv, &o);
+    g_input = o.input;
+    signal(SIGABRT, on_fatal_signal);
+    signal(SIGSEGV, on_fatal_signal);
+    signal(SIGBUS, on_fatal_signal);
+    signal(SIGFPE, on_fatal_signal);
+    name = o.name ? xrealloc(NULL, strlen(o.name) + 1) : name_from_path(o.input);
+    if (o.name)
+        strcpy(name, o.name);
+
+    memset(&m, 0, sizeof m);
+    import_model(&o, &m);
+    raw_v = m.nv;
+    raw_t = m.nt;
+    merge_vertices(&o, &m, o.merge);
+    if (m.nt == 0)
+        die(EXIT_INPUT, "the model has no triangles with a non-zero area");
+    if (m.degenerate)
+        warn(&o, "dropped %zu degenerate triangles", m.degenerate);
+
+    bbox(&m, lo, hi);
+    if (o.center)
+        for (r = 0; r < 3; r++)
+            shift[r] = (lo[r] + hi[r]) / 2;
+    for (i = 0; i < m.nv; i++) {
+        double d = 0;
+        for (r = 0; r < 3; r++)
+            d += (m.v[i].p[r] - shift[r]) * (m.v[i].p[r] - shift[r]);
+        if (d > radius)
+            radius = d;
+    }
+    radius = sqrt(radius);
+    if (o.fit) {
+        if (!(radius > 0))
+            die(EXIT_INPUT, "all vertices are at one point; cannot --fit");
+        k = o.fit_radius / radius;
+    }
+    k *= o.scale;
+    for (i = 0; i < m.nv; i++)
+        for (r = 0; r < 3; r++)
+            m.v[i].p[r] = (m.v[i].p[r] - shift[r]) * k;
+    radius *= k;
+
+    if (m.nt > MAX_OUT || m.nv > MAX_OUT || o.max_tris || o.max_verts) {
+        if (!o.max_tris && !o.max_verts)
+            die(EXIT_LIMIT, "oversized model: %zu triangles and %zu vertices after merging; "
+                            "the core takes at most %u of each (use --max-triangles / "
+                            "--max-vertices to decimate)", m.nt, m.nv, MAX_OUT);
+        decimate(&o, &m);
+    }
+
+    for (i = 0; i < m.nv; i++)
+        for (r = 0; r < 3; r++)
+            if (fabs(m.v[i].p[r]) > maxabs)
+                maxabs = fabs(m.v[i].p[r]);
+    if (maxabs > 32767.0)
+        die(EXIT_LIMIT, "oversized coordinates: |%g| exceeds the core's +-32767 model units "
+                        "(use --scale or --normalize)", maxabs);
+    if (o.quant_scale) {
+        qscale = o.quant_scale;
+        if (maxabs * 65536.0 / (double)qscale > 32767.0)
+            die(EXIT_LIMIT, "--quant-scale %ld is too small: |%g| needs at least %ld", qscale,
+                maxabs, (long)ceil(maxabs * 65536.0 / 32767.0));
+    } else {
+        qscale = (long)ceil(maxabs * 65536.0 / 32767.0);
+        if (qscale < 1)
+            qscale = 1;
+    }
+
+    if (o.info_only || !o.quiet) {
+        FILE *f = o.info_only ? stdout : stderr;
+        fprintf(f, "%s: %zu triangles, %zu vertices (importer: %zu triangles, %zu vertices); "
+                   "radius %.6g; bbox (%.6g %.6g %.6g)..(%.6g %.6g %.6g); scale %ld/65536; "
+                   "max quantisation error %.3g\n",
+                o.input, m.nt, m.nv, raw_t, raw_v, radius, lo[0], lo[1], lo[2], hi[0], hi[1],
+                hi[2], qscale, (double)qscale / 131072.0);
+    }
+    if (o.info_only)
+        return 0;
+    if (!o.output) {
+        char *p = xrealloc(NULL, strlen(name) + 1);
+        strcpy(p, name);
+        o.output = p;
+    }
+    write_files(&o, &m, name, qscale, lo, hi, radius, k, shift);
+    free_model(&m);
+    free(name);
+    return 0;
+}

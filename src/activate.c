@@ -138,7 +138,8 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     ox = zs_asr32(v[0]->x, 4);
     oy = zs_asr32(v[0]->y, 4);
     depth_plane(a, v, &area2, ox, oy, y);
-    zs_shade_setup(r, a, t, v, ox, oy, &area2, y);
+    zs_shade_setup(r, a, r->acolor ? &((zs_active_color *)r->acolor)[ai] : 0, t, v, ox, oy,
+                   &area2, y);
     r->stats.tris_drawn++;
     return 1;
 }

@@ -1,11 +1,11 @@
 /* Homogeneous clipping: outcodes, and Sutherland-Hodgman against the near and
- * far planes and the guard band (x, y within +-ZS_GUARD * w). */
+ * far planes and the guard band (x, y within +-guard * w). */
 #include "zs_internal.h"
 
 unsigned zs_outcode(const zs_renderer *r, int32_t xc, int32_t yc, int32_t w)
 {
     unsigned oc = 0;
-    int64_t gw = (int64_t)ZS_GUARD * w;
+    int64_t gw = (int64_t)r->guard * w;
     if (w < r->cam.near_z)
         oc |= ZS_OUT_NEAR;
     if (w > r->cam.far_z)
@@ -26,7 +26,7 @@ unsigned zs_outcode(const zs_renderer *r, int32_t xc, int32_t yc, int32_t w)
 /* Signed distance to plane p (inside when >= 0). */
 static int64_t plane_dist(const zs_renderer *r, int p, const zs_svert *v)
 {
-    int64_t gw = (int64_t)ZS_GUARD * v->w;
+    int64_t gw = (int64_t)r->guard * v->w;
     switch (p) {
     case 0: return (int64_t)v->w - r->cam.near_z;
     case 1: return (int64_t)r->cam.far_z - v->w;
@@ -71,10 +71,10 @@ static zs_svert intersect(const zs_renderer *r, int p, const zs_svert *in, const
     switch (p) {
     case 0: v.w = r->cam.near_z; break;
     case 1: v.w = r->cam.far_z; break;
-    case 2: v.xc = zs_sat32(-(int64_t)ZS_GUARD * v.w, 0); break;
-    case 3: v.xc = zs_sat32((int64_t)ZS_GUARD * v.w, 0); break;
-    case 4: v.yc = zs_sat32(-(int64_t)ZS_GUARD * v.w, 0); break;
-    default: v.yc = zs_sat32((int64_t)ZS_GUARD * v.w, 0); break;
+    case 2: v.xc = zs_sat32(-(int64_t)r->guard * v.w, 0); break;
+    case 3: v.xc = zs_sat32((int64_t)r->guard * v.w, 0); break;
+    case 4: v.yc = zs_sat32(-(int64_t)r->guard * v.w, 0); break;
+    default: v.yc = zs_sat32((int64_t)r->guard * v.w, 0); break;
     }
     return v;
 }

@@ -249,7 +249,7 @@ static int clip_and_setup(draw_ctx *c, uint16_t base, const uint16_t idx[3], uin
     for (k = 0; k < 3; k++) {
         const zs_vert *pv = &pool[base + idx[k]];
         to_clip(c, idx[k], &in[k].xc, &in[k].yc, &in[k].w);
-        in[k].shade = pv->shade;
+        in[k].shade = r->vshade ? ((const uint32_t *)r->vshade)[base + idx[k]] : 0;
         in[k].pool = (pv->z & ZS_VERT_UNPROJECTED) ? (uint16_t)ZS_NONE : (uint16_t)(base + idx[k]);
         and_codes &= zs_outcode(r, in[k].xc, in[k].yc, in[k].w);
     }
@@ -311,7 +311,8 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
         zs_vert *v = &pool[base + i];
         int32_t xc, yc, w;
         to_clip(&c, i, &xc, &yc, &w);
-        v->shade = vertex_shade(&c, i, w);
+        if (r->vshade)
+            ((uint32_t *)r->vshade)[base + i] = vertex_shade(&c, i, w);
         if (zs_outcode(r, xc, yc, w) & (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_GUARD))
             v->z = ZS_VERT_UNPROJECTED;
         else

@@ -51,11 +51,11 @@ static int fold_edge(zs_renderer *r, zs_edge *keep, uint16_t keep_i, zs_edge *du
 static void sort_batch(zs_renderer *r, uint16_t *a, int n)
 {
     const zs_edge *edges = (const zs_edge *)r->edges;
-    uint32_t *key = (uint32_t *)r->zline_depth, *tmp = key + n, *src, *dst;
+    uint32_t *key = (uint32_t *)r->zline_depth, *tmp, *src, *dst;
     int width, i, j;
     if (n < 2)
         return;
-    if (2 * n > 2 * (int)r->cfg.width) { /* more than the scratch holds: rare */
+    if (!key || n > (int)r->cfg.width) { /* no scratch, or more than it holds */
         for (i = 1; i < n; i++) {
             uint16_t e = a[i];
             int32_t x = edges[e].x;
@@ -65,6 +65,7 @@ static void sort_batch(zs_renderer *r, uint16_t *a, int n)
         }
         return;
     }
+    tmp = key + n;
     /* columns are within +-2^14 of the screen: an offset makes them unsigned */
     for (i = 0; i < n; i++)
         key[i] = ((uint32_t)(edges[a[i]].x + 32768) << 16) | a[i];
@@ -156,13 +157,15 @@ static void add_new_edges(zs_renderer *r, int32_t y)
     r->n_sorted = (uint16_t)n;
 }
 
-static void step_planes(zs_active *a)
+static void step_planes(zs_renderer *r, uint16_t ai)
 {
+    zs_active *a = &((zs_active *)r->active)[ai];
     a->zrow += a->zdy;
     if (a->flags & ZS_ACT_GOURAUD) {
-        a->crow[0] += (uint32_t)a->cdy[0];
-        a->crow[1] += (uint32_t)a->cdy[1];
-        a->crow[2] += (uint32_t)a->cdy[2];
+        zs_active_color *c = &((zs_active_color *)r->acolor)[ai];
+        c->crow[0] += (uint32_t)c->cdy[0];
+        c->crow[1] += (uint32_t)c->cdy[1];
+        c->crow[2] += (uint32_t)c->cdy[2];
     }
 }
 
@@ -177,7 +180,7 @@ static void retire_edge(zs_renderer *r, zs_edge *e, int32_t next, uint16_t *cont
         if (next >= a->y_end) {
             afree[r->n_active_free++] = e->lead;
         } else {
-            step_planes(a);
+            step_planes(r, e->lead);
             cont[(*n_cont)++] = e->lead;
         }
     }
@@ -192,7 +195,6 @@ static void step_edges(zs_renderer *r, int32_t y)
 {
     uint16_t *ael = (uint16_t *)r->ael;
     zs_edge *edges = (zs_edge *)r->edges;
-    zs_active *act = (zs_active *)r->active;
     uint16_t *efree = (uint16_t *)r->edge_free;
     /* continuations wait in the in-polygon set's array (unused between
      * rows): at most one per active triangle */
@@ -214,7 +216,7 @@ static void step_edges(zs_renderer *r, int32_t y)
             e->x++;
         }
         if (e->lead != ZS_NONE)
-            step_planes(&act[e->lead]);
+            step_planes(r, e->lead);
         if (e->x >= prev_x) {
             prev_x = e->x;
             ael[kept++] = ei;

@@ -11,6 +11,7 @@ zs_config zs_config_default(uint16_t width, uint16_t height, uint16_t max_triang
     c.max_triangles = max_triangles;
     c.max_vertices = max_vertices;
     c.max_active_edges = max_active_edges;
+    c.flags = 0;
     return c;
 }
 
@@ -23,6 +24,8 @@ static zs_status check_config(const zs_config *c)
     if (c->max_triangles == 0 || c->max_vertices == 0 || c->max_active_edges < 2 ||
         c->max_active_edges > ZS_MAX_ACTIVE_EDGES)
         return ZS_ERR_CAPACITY;
+    if (c->flags & ~(uint16_t)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY))
+        return ZS_ERR_ARGUMENT;
     return ZS_OK;
 }
 
@@ -30,8 +33,8 @@ size_t zs_arena_bytes(const zs_config *cfg)
 {
     if (check_config(cfg) != ZS_OK)
         return 0;
-    return ZS_ARENA_BYTES(cfg->width, cfg->height, cfg->max_triangles, cfg->max_vertices,
-                          cfg->max_active_edges);
+    return ZS_ARENA_BYTES_CFG(cfg->width, cfg->height, cfg->max_triangles, cfg->max_vertices,
+                              cfg->max_active_edges, cfg->flags);
 }
 
 /* Takes n bytes (rounded up to 8) from the cursor. */
@@ -47,6 +50,8 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
     zs_status st;
     uint8_t *cur;
     size_t need, e, a;
+    int flat = (cfg && (cfg->flags & ZS_CFG_FLAT_ONLY)) != 0;
+    unsigned dim;
     if (!r || !arena || !cfg)
         return ZS_ERR_NULL;
     st = check_config(cfg);
@@ -58,20 +63,29 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
     memset(r, 0, sizeof *r);
     r->cfg = *cfg;
     e = cfg->max_active_edges;
-    a = (e + 1u) / 2u;
+    a = e / 2u;
     cur = (uint8_t *)arena;
     cur += (ZS_ARENA_ALIGN - ((uintptr_t)cur & (ZS_ARENA_ALIGN - 1u))) & (ZS_ARENA_ALIGN - 1u);
     r->verts = carve(&cur, (size_t)cfg->max_vertices * sizeof(zs_vert));
+    r->vshade = flat ? 0 : carve(&cur, (size_t)cfg->max_vertices * 4u);
     r->tris = carve(&cur, (size_t)cfg->max_triangles * sizeof(zs_tri));
     r->buckets = carve(&cur, (size_t)cfg->height * 2u);
     r->edges = carve(&cur, e * sizeof(zs_edge));
     r->ael = carve(&cur, e * 2u);
     r->edge_free = carve(&cur, e * 2u);
     r->active = carve(&cur, a * sizeof(zs_active));
+    r->acolor = flat ? 0 : carve(&cur, a * sizeof(zs_active_color));
     r->in_set = carve(&cur, a * 2u);
     r->active_free = carve(&cur, a * 2u);
-    r->zline_depth = carve(&cur, (size_t)cfg->width * 8u);
-    r->zline_owner = carve(&cur, (size_t)cfg->width * 2u);
+    if (!(cfg->flags & ZS_CFG_NO_ZLINE)) {
+        r->zline_depth = carve(&cur, (size_t)cfg->width * 8u);
+        r->zline_owner = carve(&cur, (size_t)cfg->width * 2u);
+    }
+    /* the widest guard band whose projected 28.4 coordinates fit int16 */
+    dim = cfg->width > cfg->height ? cfg->width : cfg->height;
+    r->guard = (int32_t)(32767u / (8u * dim)) - 1;
+    if (r->guard > ZS_GUARD_MAX)
+        r->guard = ZS_GUARD_MAX;
     r->shade = zs_shade_default();
     r->bpp = (uint8_t)zs_format_bytes(r->shade.format);
     r->state = ZS_STATE_READY;
@@ -117,6 +131,8 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
         return ZS_ERR_STATE;
     if (mode != ZS_MODE_SPAN && mode != ZS_MODE_ZLINE)
         return ZS_ERR_MODE;
+    if (mode == ZS_MODE_ZLINE && (r->cfg.flags & ZS_CFG_NO_ZLINE))
+        return ZS_ERR_MODE;
     if (cam->has_view != 1 || cam->has_projection != 1)
         return ZS_ERR_CAMERA;
     if (cam->fov_deg <= 0 || cam->fov_deg >= ZS_FX(180))
@@ -158,6 +174,8 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
     if (r->state != ZS_STATE_OPEN || r->tag_counter != 0)
         return ZS_ERR_STATE;
     if (p->shading != ZS_SHADE_FLAT && p->shading != ZS_SHADE_GOURAUD)
+        return ZS_ERR_MODE;
+    if ((r->cfg.flags & ZS_CFG_FLAT_ONLY) && (p->shading != ZS_SHADE_FLAT || p->fog.enabled))
         return ZS_ERR_MODE;
     if ((unsigned)p->format >= (unsigned)ZS_FMT_COUNT)
         return ZS_ERR_FORMAT;

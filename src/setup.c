@@ -27,8 +27,8 @@ static unsigned norm_shift(uint32_t v)
  *   xc / w = xc * inv * 2^(s - 61).
  * Window depth z = far (w - near) / ((far - near) w) = A (1 - near / w) with
  * A = far / (far - near) precomputed per frame (depth_scale, Q30). */
-void zs_project(const zs_renderer *r, int32_t xc, int32_t yc, int32_t w, int32_t *x,
-                int32_t *y, uint32_t *z)
+void zs_project(const zs_renderer *r, int32_t xc, int32_t yc, int32_t w, int16_t *x,
+                int16_t *y, uint32_t *z)
 {
     int64_t hw = 8 * (int64_t)r->cfg.width; /* half the width in 1/16 px */
     int64_t hh = 8 * (int64_t)r->cfg.height;
@@ -38,8 +38,11 @@ void zs_project(const zs_renderer *r, int32_t xc, int32_t yc, int32_t w, int32_t
     int64_t ny = zs_asr64((int64_t)yc * inv, 33u - s);
     int64_t q = ((int64_t)r->cam.near_z * inv) >> (31u - s); /* near / w in Q30 */
     int64_t zz;
-    *x = (int32_t)(hw + zs_asr64(hw * nx + ((int64_t)1 << 27), 28));
-    *y = (int32_t)(hh - zs_asr64(hh * ny + ((int64_t)1 << 27), 28));
+    /* the guard band keeps these within int16 (clamped all the same) */
+    *x = (int16_t)zs_clampi((int32_t)(hw + zs_asr64(hw * nx + ((int64_t)1 << 27), 28)), -32767,
+                            32767);
+    *y = (int16_t)zs_clampi((int32_t)(hh - zs_asr64(hh * ny + ((int64_t)1 << 27), 28)), -32767,
+                            32767);
     if (q >= ((int64_t)1 << 30)) {
         zz = 0;
     } else if (r->depth_scale != 0) {
@@ -60,7 +63,8 @@ uint16_t zs_project_vertex(zs_renderer *r, int32_t xc, int32_t yc, int32_t w, ui
     }
     v = &((zs_vert *)r->verts)[r->n_verts];
     zs_project(r, xc, yc, w, &v->x, &v->y, &v->z);
-    v->shade = shade;
+    if (r->vshade)
+        ((uint32_t *)r->vshade)[r->n_verts] = shade;
     r->stats.verts_stored = ++r->n_verts;
     return (uint16_t)(r->n_verts - 1u);
 }
@@ -153,9 +157,7 @@ int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, uin
     t->v[0] = i0;
     t->v[1] = i1;
     t->v[2] = i2;
-    t->color = color;
-    t->tag = tag;
-    t->pad = 0;
+    t->color = r->shade.format == ZS_FMT_ID16 ? tag : color;
     t->next = bucket[row0];
     bucket[row0] = r->n_tris;
     r->n_tris++;

@@ -75,15 +75,16 @@ void zs_pack_pixel(zs_format fmt, uint32_t rgb, uint8_t out[4])
     }
 }
 
-/* Colour of vertex v of triangle t after modulation and fog. */
-static uint32_t vertex_rgb(const zs_renderer *r, const zs_tri *t, const zs_vert *v)
+/* Colour at a vertex of triangle t, given its shade word, after modulation
+ * and fog. */
+static uint32_t vertex_rgb(const zs_renderer *r, const zs_tri *t, uint32_t shade)
 {
     uint32_t flags = t->color >> 24;
     uint32_t c = t->color & WHITE;
     if (flags & ZS_TRI_MODULATE)
-        c = modulate(c, v->shade & WHITE);
+        c = modulate(c, shade & WHITE);
     if (flags & ZS_TRI_FOG)
-        c = fog_mix(c, r->shade.fog.color, v->shade >> 24);
+        c = fog_mix(c, r->shade.fog.color, shade >> 24);
     return c;
 }
 
@@ -93,8 +94,9 @@ static int32_t color_gradient(int64_t num, const zs_recip *area2)
     return (int32_t)zs_recip_muldiv(area2, num, 4, (int64_t)1 << 28);
 }
 
-void zs_shade_setup(const zs_renderer *r, zs_active *a, const zs_tri *t, const zs_vert *v[3],
-                    int32_t ox, int32_t oy, const zs_recip *area2, int32_t y)
+void zs_shade_setup(const zs_renderer *r, zs_active *a, zs_active_color *ac, const zs_tri *t,
+                    const zs_vert *v[3], int32_t ox, int32_t oy, const zs_recip *area2,
+                    int32_t y)
 {
     uint32_t c[3];
     uint8_t px[4];
@@ -107,15 +109,15 @@ void zs_shade_setup(const zs_renderer *r, zs_active *a, const zs_tri *t, const z
     if (r->shade.format == ZS_FMT_ID16) {
         a->flags &= (uint8_t)~ZS_ACT_GOURAUD;
         u.w = 0;
-        u.h = t->tag;
+        u.h = (uint16_t)t->color;
         a->pixel = u.w;
         return;
     }
-    if ((t->color >> 24) == 0) { /* no per-vertex colour: flat */
-        c[0] = c[1] = c[2] = t->color;
+    if ((t->color >> 24) == 0 || !r->vshade) { /* no per-vertex colour: flat */
+        c[0] = c[1] = c[2] = t->color & WHITE;
     } else {
         for (k = 0; k < 3; k++)
-            c[k] = vertex_rgb(r, t, v[k]);
+            c[k] = vertex_rgb(r, t, ((const uint32_t *)r->vshade)[t->v[k]]);
     }
     if (c[0] == c[1] && c[1] == c[2]) {
         a->flags &= (uint8_t)~ZS_ACT_GOURAUD;
@@ -139,12 +141,13 @@ void zs_shade_setup(const zs_renderer *r, zs_active *a, const zs_tri *t, const z
             int64_t d1 = (int64_t)((c[1] >> s) & 255u) * 65536 - c0;
             int64_t d2 = (int64_t)((c[2] >> s) & 255u) * 65536 - c0;
             int64_t co;
-            a->cdx[k] = color_gradient(d1 * dy2 - d2 * dy1, area2);
-            a->cdy[k] = color_gradient(d2 * dx1 - d1 * dx2, area2);
+            ac->cdx[k] = color_gradient(d1 * dy2 - d2 * dy1, area2);
+            ac->cdy[k] = color_gradient(d2 * dx1 - d1 * dx2, area2);
             /* value at the origin pixel centre, +0.5 so truncation rounds */
-            co = c0 + 32768 + zs_asr64((int64_t)a->cdx[k] * offx + (int64_t)a->cdy[k] * offy, 4);
-            a->crow[k] = (uint32_t)(co + (int64_t)a->cdy[k] * ((int64_t)y - oy) -
-                                    (int64_t)a->cdx[k] * ox);
+            co = c0 + 32768 +
+                 zs_asr64((int64_t)ac->cdx[k] * offx + (int64_t)ac->cdy[k] * offy, 4);
+            ac->crow[k] = (uint32_t)(co + (int64_t)ac->cdy[k] * ((int64_t)y - oy) -
+                                     (int64_t)ac->cdx[k] * ox);
         }
     }
 }
@@ -167,7 +170,7 @@ static uint32_t channel(uint32_t acc)
         cb += db;                                                                         \
     }
 
-void zs_fill_gouraud(const zs_renderer *r, const zs_active *a, uint8_t *row, int x0, int x1)
+void zs_fill_gouraud(const zs_renderer *r, const zs_active_color *a, uint8_t *row, int x0, int x1)
 {
     uint32_t cr = a->crow[0] + (uint32_t)a->cdx[0] * (uint32_t)x0;
     uint32_t cg = a->crow[1] + (uint32_t)a->cdx[1] * (uint32_t)x0;

@@ -105,7 +105,8 @@ static void flush(row_ctx *c, int32_t x)
     if (!a)
         zs_fill_flat(c->row, x0, x, c->r->bpp, c->background);
     else if (a->flags & ZS_ACT_GOURAUD)
-        zs_fill_gouraud(c->r, a, c->row, x0, x);
+        zs_fill_gouraud(c->r, &((const zs_active_color *)c->r->acolor)[a - c->act], c->row, x0,
+                        x);
     else
         zs_fill_flat(c->row, x0, x, c->r->bpp, a->pixel);
     c->r->stats.spans++;

@@ -56,7 +56,8 @@ void zs_zline_row(zs_renderer *r, int y, uint8_t *row)
                 depth[x] = z;
                 owner[x] = a->tri;
                 if (a->flags & ZS_ACT_GOURAUD)
-                    zs_fill_gouraud(r, a, row, x, x + 1);
+                    zs_fill_gouraud(r, &((const zs_active_color *)r->acolor)[e->lead], row, x,
+                                    x + 1);
                 else
                     zs_fill_flat(row, x, x + 1, bpp, a->pixel);
                 r->stats.pixels_shaded++;

@@ -10,26 +10,27 @@
 /* Renderer states. */
 enum { ZS_STATE_NONE = 0, ZS_STATE_READY, ZS_STATE_OPEN, ZS_STATE_RENDERING, ZS_STATE_DONE };
 
-/* Guard band: x and y are clipped only beyond +-ZS_GUARD * w (NDC units), so
- * projected coordinates stay within [-1.5, 2.5] * screen size and all edge and
+/* Guard band: x and y are clipped only beyond +-guard * w (NDC units), with
+ * guard = min(4, 32767 / (8 * max(width, height)) - 1) (2..4 for screens up
+ * to ZS_MAX_DIM), so projected 28.4 coordinates fit int16 and all edge and
  * plane arithmetic fits its integer types (see setup.c). */
-#define ZS_GUARD 4
+#define ZS_GUARD_MAX 4
 
-/* A screen-space vertex of the frame (16 bytes). */
+/* A screen-space vertex of the frame (8 bytes). Its shade word, bits 0..23
+ * RGB888 (colour or light) and 24..31 fog 0..255, is kept in a parallel
+ * array (vshade) unless the renderer is flat only. */
 typedef struct zs_vert {
-    int32_t x, y;    /* 28.4 pixels, y down */
+    int16_t x, y;    /* 28.4 pixels, y down, within the guard band */
     uint32_t z;      /* window depth Q2.30; ZS_VERT_UNPROJECTED if outside */
-    uint32_t shade;  /* bits 0..23 RGB888 (colour or light), 24..31 fog 0..255 */
 } zs_vert;
 #define ZS_VERT_UNPROJECTED 0x80000000u
 
-/* A stored triangle (16 bytes); v[] index the vertex pool. */
+/* A stored triangle (12 bytes); v[] index the vertex pool. */
 typedef struct zs_tri {
     uint16_t v[3];
     uint16_t next;   /* next record in the same first-row bucket */
-    uint32_t color;  /* bits 0..23 face RGB888, 24..31 ZS_TRI_* flags */
-    uint16_t tag;
-    uint16_t pad;
+    uint32_t color;  /* bits 0..23 face RGB888, 24..31 ZS_TRI_* flags; the
+                        tag instead when the format is ZS_FMT_ID16 */
 } zs_tri;
 #define ZS_TRI_MODULATE 0x01u  /* colour_i = face * vertex rgb_i / 255 */
 #define ZS_TRI_FOG 0x02u       /* blend toward the fog colour by vertex fog */
@@ -51,13 +52,12 @@ typedef struct zs_edge {
     uint16_t pad;
 } zs_edge;
 
-/* An active triangle: its planes, valid while it crosses the current row. */
+/* An active triangle: its depth plane and span-walk state, valid while it
+ * crosses the current row. */
 typedef struct zs_active {
     int64_t zrow;          /* depth at column 0 of the current row (Q40) */
     int64_t zdx, zdy;      /* depth per column and per row (Q40) */
     int64_t zcur;          /* scratch: depth at the current span start */
-    uint32_t crow[3];      /* colour at column 0 of this row (Q8.16, wrapping) */
-    int32_t cdx[3], cdy[3];/* colour per column and per row (Q8.16) */
     uint32_t pixel;        /* packed pixel of a flat triangle */
     uint16_t tri;          /* record index: the submission order for ties */
     uint16_t right;        /* its right (trailing) edge */
@@ -69,6 +69,12 @@ typedef struct zs_active {
     int32_t cross;         /* span walk: column where it overtakes the top */
 } zs_active;
 
+/* Colour planes of an active triangle (same index), for Gouraud shading. */
+typedef struct zs_active_color {
+    uint32_t crow[3];      /* colour at column 0 of this row (Q8.16, wrapping) */
+    int32_t cdx[3], cdy[3];/* colour per column and per row (Q8.16) */
+} zs_active_color;
+
 #define ZS_ACT_GOURAUD 0x01u   /* colour varies across the triangle */
 #define ZS_ACT_LONG_LEFT 0x02u /* the long edge is its left edge */
 
@@ -77,6 +83,7 @@ typedef char zs_check_vert[(sizeof(zs_vert) == ZS_VERTEX_BYTES) ? 1 : -1];
 typedef char zs_check_tri[(sizeof(zs_tri) == ZS_TRIANGLE_BYTES) ? 1 : -1];
 typedef char zs_check_edge[(sizeof(zs_edge) == ZS_EDGE_BYTES) ? 1 : -1];
 typedef char zs_check_active[(sizeof(zs_active) == ZS_ACTIVE_BYTES) ? 1 : -1];
+typedef char zs_check_acolor[(sizeof(zs_active_color) == ZS_ACTIVE_COLOR_BYTES) ? 1 : -1];
 
 /* ---- integer helpers (fixed.c) ---- */
 static inline int32_t zs_asr32(int32_t v, unsigned s);
@@ -114,8 +121,8 @@ enum { ZS_SETUP_STORED, ZS_SETUP_CULLED, ZS_SETUP_EMPTY, ZS_SETUP_REJECTED, ZS_S
 /* Projects a clip-space vertex into the pool; returns its index or ZS_NONE. */
 uint16_t zs_project_vertex(zs_renderer *r, int32_t xc, int32_t yc, int32_t w, uint32_t shade);
 /* Projected vertex data without storing it (same arithmetic as above). */
-void zs_project(const zs_renderer *r, int32_t xc, int32_t yc, int32_t w, int32_t *x,
-                int32_t *y, uint32_t *z);
+void zs_project(const zs_renderer *r, int32_t xc, int32_t yc, int32_t w, int16_t *x,
+                int16_t *y, uint32_t *z);
 /* Twice the signed screen area (1/256 px^2); < 0 for a front face. */
 int64_t zs_area2(const zs_vert *a, const zs_vert *b, const zs_vert *c);
 /* First row whose pixel centre is at or below y (28.4): ceil(y/16 - 0.5). */
@@ -151,10 +158,12 @@ void zs_raster_row(zs_renderer *r, int y, uint8_t *row); /* row NULL: step only 
 
 /* shade.c: pixel packing and span fills */
 void zs_pack_pixel(zs_format fmt, uint32_t rgb, uint8_t out[4]);
-void zs_fill_gouraud(const zs_renderer *r, const zs_active *a, uint8_t *row, int x0, int x1);
+void zs_fill_gouraud(const zs_renderer *r, const zs_active_color *a, uint8_t *row, int x0, int x1);
 /* Sets the colour planes and flat pixel of an active triangle. */
-void zs_shade_setup(const zs_renderer *r, zs_active *a, const zs_tri *t, const zs_vert *v[3],
-                    int32_t ox, int32_t oy, const zs_recip *area2, int32_t y);
+/* ac: the triangle's colour planes, NULL for a flat-only renderer. */
+void zs_shade_setup(const zs_renderer *r, zs_active *a, zs_active_color *ac, const zs_tri *t,
+                    const zs_vert *v[3], int32_t ox, int32_t oy, const zs_recip *area2,
+                    int32_t y);
 uint32_t zs_light_color(uint32_t rgb, zs_fixed intensity);
 
 /* span.c / zline.c: one row's visibility */

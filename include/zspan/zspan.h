@@ -113,7 +113,8 @@ typedef enum zs_status {
     ZS_ERR_ROW,           /* row range outside the screen or before the next row */
     ZS_ERR_BUFFER,        /* buffer stride too small for the width and format */
     ZS_ERR_FORMAT,        /* unknown pixel format */
-    ZS_ERR_MODE,          /* unknown visibility or shading mode */
+    ZS_ERR_MODE,          /* unknown visibility or shading mode, or one the
+                             config's flags left out */
     ZS_ERR_ARGUMENT,      /* any other argument out of its documented range */
     ZS_STATUS_COUNT
 } zs_status;
@@ -125,16 +126,23 @@ const char *zs_strerror(zs_status status);
 /* Capacities and the arena                                             */
 /* ------------------------------------------------------------------ */
 
-#define ZS_MAX_DIM 2048          /* width and height limit, pixels */
+#define ZS_MAX_DIM 1024          /* width and height limit, pixels */
 #define ZS_MAX_TRIANGLES 65535   /* per frame, after clipping */
 #define ZS_MAX_VERTICES 65535    /* per frame, including clip-made vertices */
-#define ZS_MAX_ACTIVE_EDGES 4096 /* edges crossing one row (2 per triangle) */
+#define ZS_MAX_ACTIVE_EDGES 4096 /* edge sides crossing one row (2 per triangle) */
+
+/* zs_config.flags: leave out what a build does not use, to save RAM. */
+#define ZS_CFG_NO_ZLINE 0x01u    /* no z-buffer line: ZS_MODE_ZLINE is refused */
+#define ZS_CFG_FLAT_ONLY 0x02u   /* no per-vertex colour or fog: ZS_SHADE_GOURAUD
+                                    and fog are refused (flat and lit faces work) */
 
 /* Sizes of the records the arena holds (checked against sizeof in src/). */
-#define ZS_VERTEX_BYTES 16u
-#define ZS_TRIANGLE_BYTES 16u
+#define ZS_VERTEX_BYTES 8u        /* screen x, y (28.4 in int16) and depth */
+#define ZS_VERTEX_SHADE_BYTES 4u  /* per-vertex colour or light, and fog */
+#define ZS_TRIANGLE_BYTES 12u     /* three vertex indices, bucket link, colour */
 #define ZS_EDGE_BYTES 28u
-#define ZS_ACTIVE_BYTES 88u      /* per active triangle: depth and colour planes */
+#define ZS_ACTIVE_BYTES 56u       /* per active triangle: depth plane, span state */
+#define ZS_ACTIVE_COLOR_BYTES 36u /* per active triangle: colour planes */
 #define ZS_ARENA_ALIGN 8u
 
 /* Internal: n rounded up to a multiple of ZS_ARENA_ALIGN. */
@@ -142,21 +150,32 @@ const char *zs_strerror(zs_status status);
 
 /* Bytes of arena for a screen of w x h pixels holding up to max_tris
  * triangle records and max_verts vertices per frame and max_edges active
- * edges on one row (2 per triangle crossing the row). Includes the one-row
- * depth line of the z-buffer mode and alignment slack; a compile-time
- * constant when the arguments are. Per pool: vertices 16 B, triangles 16 B,
- * row buckets 2 B per row, edges 32 B, active triangles 92 B (one per two
- * edges), z-buffer line 10 B per column. */
-#define ZS_ARENA_BYTES(w, h, max_tris, max_verts, max_edges)                  \
-    (ZS_ROUND8_((size_t)(max_verts) * ZS_VERTEX_BYTES) +                       \
-     ZS_ROUND8_((size_t)(max_tris) * ZS_TRIANGLE_BYTES) +                      \
-     ZS_ROUND8_((size_t)(h) * 2u) +                                            \
-     ZS_ROUND8_((size_t)(max_edges) * ZS_EDGE_BYTES) +                         \
-     2u * ZS_ROUND8_((size_t)(max_edges) * 2u) +                               \
-     ZS_ROUND8_((size_t)(((max_edges) + 1u) / 2u) * ZS_ACTIVE_BYTES) +         \
-     2u * ZS_ROUND8_((size_t)(((max_edges) + 1u) / 2u) * 2u) +                 \
-     ZS_ROUND8_((size_t)(w) * 8u) + ZS_ROUND8_((size_t)(w) * 2u) +             \
+ * edge sides on one row (2 per triangle crossing the row; an active triangle
+ * takes one slot per two), with the features `flags` (ZS_CFG_*) leaves in.
+ * Includes alignment slack; a compile-time constant when the arguments are.
+ * Per pool: vertices 8 B (+4 B shade), triangle records 12 B, row buckets
+ * 2 B per row, edges 32 B, active triangles 60 B (+36 B colour planes), the
+ * z-buffer line 10 B per column. */
+#define ZS_ARENA_BYTES_CFG(w, h, max_tris, max_verts, max_edges, flags)            \
+    (ZS_ROUND8_((size_t)(max_verts) * ZS_VERTEX_BYTES) +                            \
+     (((flags) & ZS_CFG_FLAT_ONLY) ? 0u                                             \
+                                   : ZS_ROUND8_((size_t)(max_verts) * ZS_VERTEX_SHADE_BYTES)) + \
+     ZS_ROUND8_((size_t)(max_tris) * ZS_TRIANGLE_BYTES) +                           \
+     ZS_ROUND8_((size_t)(h) * 2u) +                                                 \
+     ZS_ROUND8_((size_t)(max_edges) * ZS_EDGE_BYTES) +                              \
+     2u * ZS_ROUND8_((size_t)(max_edges) * 2u) +                                    \
+     ZS_ROUND8_((size_t)((max_edges) / 2u) * ZS_ACTIVE_BYTES) +                     \
+     (((flags) & ZS_CFG_FLAT_ONLY)                                                  \
+          ? 0u                                                                      \
+          : ZS_ROUND8_((size_t)((max_edges) / 2u) * ZS_ACTIVE_COLOR_BYTES)) +       \
+     2u * ZS_ROUND8_((size_t)((max_edges) / 2u) * 2u) +                             \
+     (((flags) & ZS_CFG_NO_ZLINE) ? 0u                                              \
+                                  : ZS_ROUND8_((size_t)(w) * 8u) + ZS_ROUND8_((size_t)(w) * 2u)) + \
      ZS_ARENA_ALIGN)
+
+/* All features (both visibility modes, Gouraud and fog). */
+#define ZS_ARENA_BYTES(w, h, max_tris, max_verts, max_edges)                        \
+    ZS_ARENA_BYTES_CFG(w, h, max_tris, max_verts, max_edges, 0u)
 
 typedef struct zs_config {
     uint16_t width, height;       /* pixels, 1..ZS_MAX_DIM */
@@ -165,11 +184,13 @@ typedef struct zs_config {
     uint16_t max_active_edges;    /* 2..ZS_MAX_ACTIVE_EDGES: two per triangle
                                      crossing one row (edges that two
                                      triangles share are stored once) */
+    uint16_t flags;               /* ZS_CFG_*; 0 = everything */
 } zs_config;
 
 zs_config zs_config_default(uint16_t width, uint16_t height, uint16_t max_triangles,
                             uint16_t max_vertices, uint16_t max_active_edges);
-/* The same figure as ZS_ARENA_BYTES, at run time (0 for an invalid config). */
+/* All features (flags 0). */
+/* The same figure as ZS_ARENA_BYTES_CFG, at run time (0 for an invalid config). */
 size_t zs_arena_bytes(const zs_config *cfg);
 
 /* ------------------------------------------------------------------ */
@@ -325,8 +346,9 @@ typedef struct zs_renderer {
     zs_shade_params shade;
     zs_camera cam;
     /* private: arena pools */
-    void *verts, *tris, *buckets, *edges, *ael, *edge_free, *active, *in_set,
-        *active_free, *zline_depth, *zline_owner;
+    void *verts, *vshade, *tris, *buckets, *edges, *ael, *edge_free, *active, *acolor,
+        *in_set, *active_free, *zline_depth, *zline_owner;
+    int32_t guard;                    /* guard band, in units of w */
     /* private: frame state */
     zs_vec3 light_dir[ZS_MAX_LIGHTS]; /* unit, Q16.16 */
     zs_fixed proj_sx, proj_sy;        /* clip-space x and y scale */

@@ -268,7 +268,10 @@ static int clip_and_setup(draw_ctx *c, uint16_t base, const uint16_t idx[3], uin
         if (out[0].pool == ZS_NONE || out[k].pool == ZS_NONE || out[k + 1].pool == ZS_NONE)
             piece = ZS_SETUP_DROPPED;
         else
-            piece = zs_setup_triangle(r, out[0].pool, out[k].pool, out[k + 1].pool, color, tag);
+            piece = zs_setup_triangle(r, out[0].pool, out[k].pool, out[k + 1].pool,
+                                      zs_area2(&pool[out[0].pool], &pool[out[k].pool],
+                                               &pool[out[k + 1].pool]),
+                                      color, tag);
         outcome = merge_outcome(outcome, piece);
     }
     return outcome;
@@ -339,11 +342,14 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
         v2 = &pool[base + idx[2]];
         if ((v0->z | v1->z | v2->z) & ZS_VERT_UNPROJECTED) {
             outcome = clip_and_setup(&c, base, idx, t, tag);
-        } else if (zs_area2(v0, v1, v2) >= 0) {
-            outcome = ZS_SETUP_CULLED; /* cheap test before lighting the face */
         } else {
-            outcome = zs_setup_triangle(r, (uint16_t)(base + idx[0]), (uint16_t)(base + idx[1]),
-                                        (uint16_t)(base + idx[2]), face_color(&c, t, idx), tag);
+            int64_t area2 = zs_area2(v0, v1, v2);
+            if (area2 >= 0) /* culled before lighting the face */
+                outcome = ZS_SETUP_CULLED;
+            else
+                outcome = zs_setup_triangle(r, (uint16_t)(base + idx[0]),
+                                            (uint16_t)(base + idx[1]), (uint16_t)(base + idx[2]),
+                                            area2, face_color(&c, t, idx), tag);
         }
         count_outcome(&r->stats, outcome);
     }

@@ -124,8 +124,8 @@ static int covers_any(const zs_vert *a, const zs_vert *b, const zs_vert *c, int3
     return 0;
 }
 
-int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, uint32_t color,
-                      uint16_t tag)
+int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, int64_t area2,
+                      uint32_t color, uint16_t tag)
 {
     const zs_vert *pool = (const zs_vert *)r->verts;
     const zs_vert *a = &pool[i0], *b = &pool[i1], *c = &pool[i2];
@@ -133,7 +133,7 @@ int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, uin
     zs_tri *t;
     uint16_t *bucket = (uint16_t *)r->buckets;
     /* counter-clockwise seen from the camera is clockwise with y down */
-    if (zs_area2(a, b, c) >= 0)
+    if (area2 >= 0)
         return ZS_SETUP_CULLED;
     xmin = min3(a->x, b->x, c->x);
     xmax = max3(a->x, b->x, c->x);

@@ -131,7 +131,9 @@ static inline int32_t zs_first_row(int32_t y)
     return zs_asr32(y + 7, 4);
 }
 /* Culls, bounds and stores one screen triangle; returns ZS_SETUP_*. */
-int zs_setup_triangle(zs_renderer *r, uint16_t v0, uint16_t v1, uint16_t v2, uint32_t color,
+/* area2: zs_area2 of the three vertices. */
+int zs_setup_triangle(zs_renderer *r, uint16_t v0, uint16_t v1, uint16_t v2, int64_t area2,
+                      uint32_t color,
                       uint16_t tag);
 /* clip.c: clips polygon in[n] against the near/far planes and the guard band;
  * returns the vertex count of out (0..9). out must hold 9. */

@@ -16,9 +16,8 @@ typedef struct draw_ctx {
     int vertex_light;   /* lighting per vertex (Gouraud with vertex normals) */
     int vertex_color;   /* Gouraud with per-vertex colours */
     uint32_t tri_flags;
-    int fast;           /* 1: clip rows below fit int64 sums, 2: they fit int32 */
-    int64_t clip[3][3]; /* int16 position -> xc, yc, w, Q32 (scale and projection folded in) */
-    int32_t clip32[3][3]; /* the same when they fit: 32x16-bit products */
+    int fast;           /* the folded rows below fit 32 bits */
+    int32_t clip[3][3]; /* int16 position -> xc, yc, w, Q32 (scale and projection folded in) */
     int64_t clip_t[3];  /* the translations, Q16 */
 } draw_ctx;
 
@@ -28,33 +27,26 @@ static int64_t abs64(int64_t v)
 }
 
 /* Folds scale and projection into the model-view rows where the products
- * stay small enough (always, for real scenes); else the general path runs. */
+ * fit 32 bits (always, for real scenes: a unit sphere in int16 has a scale
+ * near 2^-15); else the general path runs. */
 static void prepare_clip_rows(draw_ctx *c)
 {
     const zs_renderer *r = c->r;
     const int64_t sign[3] = {1, 1, -1}; /* w = -z_eye */
     const int64_t proj[3] = {r->proj_sx, r->proj_sy, 65536};
     int k, j;
-    c->fast = abs64(c->mesh->scale) < ((int64_t)1 << 30) ? 2 : 0;
+    c->fast = abs64(c->mesh->scale) < ((int64_t)1 << 30);
     for (k = 0; k < 3 && c->fast; k++) {
         for (j = 0; j < 3; j++) {
             int64_t m = zs_asr64((int64_t)c->mv.m[k][j] * proj[k] + 32768, 16) * sign[k];
-            if (abs64(m) >= ((int64_t)1 << 31)) {
+            if (abs64(m) >= ((int64_t)1 << 31) || abs64(m * c->mesh->scale) >= INT32_MAX) {
                 c->fast = 0;
                 break;
             }
-            c->clip[k][j] = m * c->mesh->scale; /* |.| < 2^61 */
-            if (abs64(c->clip[k][j]) >= ((int64_t)1 << 46))
-                c->fast = 0; /* three products of int16 must sum below 2^63 */
-            else if (abs64(c->clip[k][j]) >= ((int64_t)1 << 31))
-                c->fast = 1;
+            c->clip[k][j] = (int32_t)(m * c->mesh->scale);
         }
         c->clip_t[k] = zs_asr64((int64_t)c->mv.m[k][3] * proj[k] + 32768, 16) * sign[k];
     }
-    if (c->fast == 2)
-        for (k = 0; k < 3; k++)
-            for (j = 0; j < 3; j++)
-                c->clip32[k][j] = (int32_t)c->clip[k][j];
 }
 
 static int32_t sat_count(zs_renderer *r, int64_t v)
@@ -65,27 +57,16 @@ static int32_t sat_count(zs_renderer *r, int64_t v)
 /* Model-space vertex i to clip space (Q16.16). */
 static void to_clip(const draw_ctx *c, uint32_t i, int32_t *xc, int32_t *yc, int32_t *w)
 {
-    if (c->fast == 2) { /* 32x16-bit products accumulated in 64 bits */
+    if (c->fast) { /* 32x16-bit products accumulated in 64 bits */
         const int16_t *pos = c->mesh->positions + 3u * i;
         int32_t px = pos[0], py = pos[1], pz = pos[2];
-        const int32_t *m0 = c->clip32[0], *m1 = c->clip32[1], *m2 = c->clip32[2];
+        const int32_t *m0 = c->clip[0], *m1 = c->clip[1], *m2 = c->clip[2];
         int64_t sx = (int64_t)m0[0] * px + (int64_t)m0[1] * py + (int64_t)m0[2] * pz + 32768;
         int64_t sy = (int64_t)m1[0] * px + (int64_t)m1[1] * py + (int64_t)m1[2] * pz + 32768;
         int64_t sw = (int64_t)m2[0] * px + (int64_t)m2[1] * py + (int64_t)m2[2] * pz + 32768;
         *xc = sat_count(c->r, zs_asr64(sx, 16) + c->clip_t[0]);
         *yc = sat_count(c->r, zs_asr64(sy, 16) + c->clip_t[1]);
         *w = sat_count(c->r, zs_asr64(sw, 16) + c->clip_t[2]);
-    } else if (c->fast) {
-        const int16_t *pos = c->mesh->positions + 3u * i;
-        int64_t out[3];
-        int k;
-        for (k = 0; k < 3; k++) {
-            int64_t s = c->clip[k][0] * pos[0] + c->clip[k][1] * pos[1] + c->clip[k][2] * pos[2];
-            out[k] = zs_asr64(s + 32768, 16) + c->clip_t[k];
-        }
-        *xc = sat_count(c->r, out[0]);
-        *yc = sat_count(c->r, out[1]);
-        *w = sat_count(c->r, out[2]);
     } else { /* general path: saturate after each stage */
         zs_renderer *r = c->r;
         const int16_t *pos = c->mesh->positions + 3u * i;

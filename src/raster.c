@@ -157,7 +157,7 @@ static void add_new_edges(zs_renderer *r, int32_t y)
     r->n_sorted = (uint16_t)n;
 }
 
-static void step_planes(zs_renderer *r, uint16_t ai)
+static inline void step_planes(zs_renderer *r, uint16_t ai)
 {
     zs_active *a = &((zs_active *)r->active)[ai];
     a->zrow += a->zdy;

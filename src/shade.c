@@ -178,6 +178,19 @@ void zs_fill_gouraud(const zs_renderer *r, const zs_active_color *a, uint8_t *ro
     uint32_t dr = (uint32_t)a->cdx[0], dg = (uint32_t)a->cdx[1], db = (uint32_t)a->cdx[2];
     uint8_t *p = row + (size_t)x0 * r->bpp;
     int x;
+#if defined(__OPTIMIZE_SIZE__)
+    /* built for size: one loop packing through zs_pack_pixel */
+    for (x = x0; x < x1; x++, p += r->bpp) {
+        uint8_t px[4];
+        unsigned k;
+        zs_pack_pixel(r->shade.format, (channel(cr) << 16) | (channel(cg) << 8) | channel(cb), px);
+        for (k = 0; k < r->bpp; k++)
+            p[k] = px[k];
+        cr += dr;
+        cg += dg;
+        cb += db;
+    }
+#else
     switch (r->shade.format) {
     case ZS_FMT_RGB565_BE:
         GOURAUD_LOOP(2, {
@@ -215,4 +228,5 @@ void zs_fill_gouraud(const zs_renderer *r, const zs_active_color *a, uint8_t *ro
         })
         break;
     }
+#endif
 }

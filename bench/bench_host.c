@@ -135,8 +135,10 @@ int main(int argc, char **argv)
     uint16_t tight[BENCH_SCENE_COUNT][3];
     if (argc == 5 && !strcmp(argv[1], "arena")) {
         /* bench_host arena TRIS VERTS EDGES: zs_arena_bytes at 240x240 */
+        /* a display board's build: flat shading, span mode only */
         zs_config c = zs_config_default(BENCH_W, BENCH_H, (uint16_t)atoi(argv[2]),
                                         (uint16_t)atoi(argv[3]), (uint16_t)atoi(argv[4]));
+        c.flags = ZS_CFG_FLAT_ONLY | ZS_CFG_NO_ZLINE;
         printf("%zu\n", zs_arena_bytes(&c));
         return 0;
     }

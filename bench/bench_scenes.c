@@ -29,8 +29,11 @@ zs_mat34 bench_model_view(const bench_scene *s, int frame)
 
 zs_config bench_config(const bench_scene *s)
 {
-    return zs_config_default(BENCH_W, BENCH_H, s->max_triangles, s->max_vertices,
-                             s->max_active_edges);
+    /* the scenes are flat and unlit: no per-vertex shading pools */
+    zs_config c = zs_config_default(BENCH_W, BENCH_H, s->max_triangles, s->max_vertices,
+                                    s->max_active_edges);
+    c.flags = ZS_CFG_FLAT_ONLY;
+    return c;
 }
 
 zs_status bench_camera(zs_camera *cam)

@@ -42,11 +42,11 @@ SIM_EXTRA_LIBS :=
 # The core
 # ---------------------------------------------------------------------------
 CORE_SRCS := $(sort $(wildcard src/*.c))
-CORE_WARN := -std=c99 -Wall -Wextra -Werror -Wconversion -ffreestanding
+CORE_WARN := -std=c99 -Wall -Wextra -Werror -Wconversion -ffreestanding -fno-strict-aliasing
 CORE_CFLAGS := $(CORE_WARN) -O2 -Iinclude
 ASAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all
 CORE_ASAN_CFLAGS := $(CORE_WARN) $(ASAN_FLAGS) -g -O1 -Iinclude
-M0_CFLAGS := -mcpu=cortex-m0 -mthumb -mfloat-abi=soft -Os -std=c99 -ffreestanding \
+M0_CFLAGS := -mcpu=cortex-m0 -mthumb -mfloat-abi=soft -Os -std=c99 -ffreestanding -fno-strict-aliasing \
              -Wall -Wextra -Werror -Iinclude
 
 LIB := $(BUILD)/libzspan.a

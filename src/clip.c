@@ -101,7 +101,9 @@ int zs_clip_polygon(const zs_renderer *r, const zs_svert *in, int n, zs_svert *o
         for (i = 0; i < cnt; i++) {
             int j = (i + 1 == cnt) ? 0 : i + 1;
             int in_i = d[i] >= 0, in_j = d[j] >= 0;
-            if (in_i)
+            /* a polygon made slightly non-convex by rounding could be cut
+             * twice by one plane: never write past the 9 slots */
+            if (in_i && m < 9)
                 dst[m++] = src[i];
             if (in_i != in_j && m < 9) {
                 if (in_i)

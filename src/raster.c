@@ -4,6 +4,26 @@
  * retire finished ones and restore the order. */
 #include "zs_internal.h"
 
+/* Setup pushes records on the front of their row's list; turning each list
+ * once puts them back in submission order, so when the active pools fill
+ * up, the triangles submitted last are the ones dropped. */
+static void reverse_buckets(zs_renderer *r)
+{
+    uint16_t *bucket = (uint16_t *)r->buckets;
+    zs_tri *tris = (zs_tri *)r->tris;
+    int y;
+    for (y = 0; y < (int)r->cfg.height; y++) {
+        uint16_t prev = ZS_NONE, t = bucket[y];
+        while (t != ZS_NONE) {
+            uint16_t next = tris[t].next;
+            tris[t].next = prev;
+            prev = t;
+            t = next;
+        }
+        bucket[y] = prev;
+    }
+}
+
 void zs_raster_begin(zs_renderer *r)
 {
     uint16_t *efree = (uint16_t *)r->edge_free;
@@ -20,6 +40,7 @@ void zs_raster_begin(zs_renderer *r)
     r->n_active_free = a;
     r->n_ael = 0;
     r->n_sorted = 0;
+    reverse_buckets(r);
 }
 
 /* Two new edges on the same line over the same rows, one ending a triangle

@@ -168,6 +168,7 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
 
 zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
 {
+    zs_vec3 dirs[ZS_MAX_LIGHTS];
     int i;
     if (!r || !p)
         return ZS_ERR_NULL;
@@ -193,8 +194,11 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
         d[2] = p->lights[i].direction.z;
         if (!zs_normalize3(d, u))
             return ZS_ERR_ARGUMENT;
-        r->light_dir[i] = zs_vec3_make(u[0], u[1], u[2]);
+        dirs[i] = zs_vec3_make(u[0], u[1], u[2]);
     }
+    /* a refused call changes nothing: commit only now */
+    for (i = 0; i < p->light_count; i++)
+        r->light_dir[i] = dirs[i];
     r->shade = *p;
     r->bpp = (uint8_t)zs_format_bytes(p->format);
     return ZS_OK;

@@ -362,7 +362,10 @@ typedef struct zs_renderer {
 } zs_renderer;
 
 /* Checks the config and carves the arena (any alignment; ZS_ARENA_BYTES
- * includes the slack). ZS_ERR_ARENA_SMALL if arena_size < zs_arena_bytes(cfg). */
+ * includes the slack). ZS_ERR_ARENA_SMALL if arena_size < zs_arena_bytes(cfg).
+ * The core stores its own record types in the arena, whatever type the
+ * caller declared it with: build src/ with -fno-strict-aliasing (the
+ * Makefile does), or hand it memory without a declared type. */
 zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_config *cfg);
 
 /* Starts a frame: clears the pools and statistics. The camera is copied. */
@@ -371,6 +374,11 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
  * zs_draw (zs_frame_begin resets it to zs_shade_default()). */
 zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *params);
 
+/* Capacity policy: a draw's vertices that do not fit the vertex pool are
+ * dropped with the triangles using them; records that do not fit the
+ * triangle pool are dropped (the last submitted lose); a triangle whose first
+ * row finds the active-triangle pool full is skipped for the frame (on one
+ * row, the later submitted lose). All of it is counted in zs_stats. */
 /* Transforms, culls, clips and stores a mesh's triangles. model may be NULL
  * (identity). Each submitted triangle gets the next tag (1, 2, 3, ... in
  * submission order across the frame; after 65535 the count starts again at 1,

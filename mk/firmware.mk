@@ -1,6 +1,6 @@
 # mk/firmware.mk: the mesh converter, the Cortex-M port (QEMU mps2-an386 and
 # microbit, an STM32F411 example), the benchmark. Included by the top-level
-# Makefile (see docs/BUILD-CONTRACT.md and docs/firmware.md).
+# Makefile (see docs/BUILD-CONTRACT.md and README.md (Meshes, firmware and the benchmark)).
 #
 #   build/zspan-meshc                  the converter (tools/zspan-meshc.c, assimp)
 #   build/bench/bench_host             host benchmark driver

@@ -7,7 +7,8 @@
 #        new inputs in build/fuzz/corpus/<h>/ (tests/fuzz/corpus/<h>/ is read
 #        only), crashes in build/fuzz/artifacts/<h>/.
 #   make test-fuzz-smoke   (part of make test) each harness over its checked-in
-#        corpus, then FUZZ_SMOKE_RUNS more runs from -seed=1: a few seconds.
+#        corpus, then FUZZ_SMOKE_RUNS (meshc: FUZZ_SMOKE_RUNS_meshc) more runs
+#        from -seed=1: well under a minute for all of them.
 #   make fuzz-merge        folds build/fuzz/corpus/<h>/ into the checked-in
 #        corpus (libFuzzer -merge=1 keeps only inputs that add coverage).
 #   build/tests/robust/*   cmocka suites (TEST_SUITES): tests/robust/*.c
@@ -16,6 +17,7 @@
 #   frame  whole frames from bytes: camera, meshes, pools, shading, bands
 #   panel  the emulated panel (host_sim/emu) decoding arbitrary wire streams
 #   meshc  the mesh converter's input path (tools/zspan-meshc.c), if present
+#   mcp2210 the MCP2210 port's answer handling (ports/mcp2210/mcp2210.c), if present
 
 DEB_PACKAGES += clang libclang-rt-14-dev libcmocka-dev
 
@@ -28,7 +30,8 @@ FUZZ_DIR := $(BUILD)/fuzz
 FUZZ_SAN := -fsanitize=address,undefined -fno-sanitize-recover=all
 # The core as the fuzzer sees it: coverage-instrumented, sanitized, and with
 # span.c's fills counted (tests/fuzz/span_counted.c replaces span.o).
-FUZZ_CORE_CFLAGS := -std=c99 -Wall -Wextra -Wconversion -ffreestanding -g -O1 -Iinclude \
+FUZZ_CORE_CFLAGS := -std=c99 -Wall -Wextra -Wconversion -ffreestanding -fno-strict-aliasing \
+                    -g -O1 -Iinclude \
                     $(FUZZ_SAN) -fsanitize=fuzzer-no-link
 FUZZ_CFLAGS := -std=c99 -Wall -Wextra -Werror -g -O1 -Iinclude -Itests/core/common \
                -Itests/fuzz $(FUZZ_SAN)
@@ -41,17 +44,31 @@ FUZZ_ZT_OBJ := $(FUZZ_DIR)/zt.o
 
 # Harnesses whose code under test is in the tree (others' areas may not be yet).
 FUZZ_HARNESSES := frame $(if $(wildcard host_sim/emu/emu.c),panel) \
-                  $(if $(wildcard tools/zspan-meshc.c),meshc)
+                  $(if $(wildcard tools/zspan-meshc.c),meshc) \
+                  $(if $(wildcard ports/mcp2210/mcp2210.c),mcp2210)
 FUZZ_BINS = $(addprefix $(FUZZ_DIR)/fuzz_,$(FUZZ_HARNESSES))
 FUZZ_ONLY ?= $(FUZZ_HARNESSES)
 # Extra libFuzzer flags per harness. assimp leaks a scene on some failed
 # imports (outside our code), so leak checking is off for the converter.
 FUZZ_FLAGS_meshc := -detect_leaks=0
-# Shell: sets $extra to the flags of harness $h.
+# Smoke runs per harness (the converter is slow: assimp per input).
+FUZZ_SMOKE_RUNS_meshc ?= 300
+# Shell: sets $extra to the flags and $runs to the smoke runs of harness $h.
 FUZZ_RPAREN := )
-FUZZ_EXTRA = extra=; case $$h in $(foreach h,$(FUZZ_HARNESSES),$(h)$(FUZZ_RPAREN) extra='$(FUZZ_FLAGS_$(h))';;) esac
+FUZZ_EXTRA = extra=; runs=$(FUZZ_SMOKE_RUNS); case $$h in $(foreach h,$(FUZZ_HARNESSES),$(h)$(FUZZ_RPAREN) extra='$(FUZZ_FLAGS_$(h))' $(if $(FUZZ_SMOKE_RUNS_$(h)),runs=$(FUZZ_SMOKE_RUNS_$(h)));;) esac
 
 TEST_TARGETS += test-fuzz-smoke
+
+# cmocka suites of the bad-input policy: each tests/robust/NAME.c is a program,
+# linked like the core suites (tests/core/common, the sanitizer library).
+ROBUST_TEST_SRCS := $(sort $(wildcard tests/robust/*.c))
+ROBUST_TEST_BINS := $(patsubst tests/robust/%.c,$(BUILD)/tests/robust/%,$(ROBUST_TEST_SRCS))
+TEST_SUITES += $(ROBUST_TEST_BINS)
+
+$(BUILD)/tests/robust/%: tests/robust/%.c $(CORE_TEST_COMMON_OBJS) $(ASAN_LIB) \
+                         tests/core/common/zt.h include/zspan/zspan.h | deps
+	@mkdir -p $(@D)
+	$(CC) $(CORE_TEST_CFLAGS) -o $@ $< $(CORE_TEST_COMMON_OBJS) $(ASAN_LIB) $(CORE_TEST_LIBS)
 
 .PHONY: fuzz fuzz-build test-fuzz-smoke fuzz-merge
 
@@ -98,6 +115,18 @@ $(FUZZ_DIR)/fuzz_meshc: tests/fuzz/fuzz_meshc.c tests/fuzz/fuzz_util.h tools/zsp
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -Wno-unused-function $(FUZZ_ASSIMP_CFLAGS) -fsanitize=fuzzer \
 	    -o $@ $< $(FUZZ_CORE_LIB) $(FUZZ_ASSIMP_LIBS) -lm
 
+# (d) the MCP2210 port against a chip whose answers are the fuzz input; the
+# port uses the zs_bus glue of drivers/bus.c.
+$(FUZZ_DIR)/mcp2210/%.o: %.c | deps
+	@mkdir -p $(@D)
+	$(FUZZ_CC) -std=c99 -D_POSIX_C_SOURCE=200809L -g -O1 -Iinclude -Iports/mcp2210 $(FUZZ_SAN) \
+	    -fsanitize=fuzzer-no-link -c $< -o $@
+$(FUZZ_DIR)/fuzz_mcp2210: tests/fuzz/fuzz_mcp2210.c tests/fuzz/fuzz_util.h \
+                          $(FUZZ_DIR)/mcp2210/ports/mcp2210/mcp2210.o \
+                          $(FUZZ_DIR)/mcp2210/drivers/bus.o | deps
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -Iports/mcp2210 -fsanitize=fuzzer -o $@ $< \
+	    $(FUZZ_DIR)/mcp2210/ports/mcp2210/mcp2210.o $(FUZZ_DIR)/mcp2210/drivers/bus.o
+
 fuzz-build: $(FUZZ_BINS)
 
 # One harness after the other (the machine is shared: one job at a time).
@@ -113,7 +142,8 @@ fuzz: $(FUZZ_BINS) | deps
 	        echo "fuzz: $$h FAILED, see $(FUZZ_DIR)/logs/$$h.log and $(FUZZ_DIR)/artifacts/$$h/"; \
 	        fail=1; \
 	    fi; \
-	    grep -E '^(stat::|#[0-9]+ +DONE)' $(FUZZ_DIR)/logs/$$h.log | sed "s/^/  $$h: /"; \
+	    { grep -E 'cov: ' $(FUZZ_DIR)/logs/$$h.log | tail -1; grep -E '^(stat::|Done )' \
+	        $(FUZZ_DIR)/logs/$$h.log; } | sed "s/^/  $$h: /"; \
 	done; exit $$fail
 
 # make test: the checked-in corpora (every earlier crash is a seed there), then
@@ -124,11 +154,11 @@ test-fuzz-smoke: $(FUZZ_BINS) | deps
 	    $(FUZZ_EXTRA); \
 	    out=$(FUZZ_DIR)/smoke/$$h; rm -rf $$out; mkdir -p $$out $(FUZZ_DIR)/artifacts/smoke-$$h; \
 	    n=$$(ls tests/fuzz/corpus/$$h 2>/dev/null | wc -l); \
-	    if $(FUZZ_DIR)/fuzz_$$h $$extra -runs=$$(( n + $(FUZZ_SMOKE_RUNS) )) -seed=$(FUZZ_SMOKE_SEED) \
+	    if $(FUZZ_DIR)/fuzz_$$h $$extra -runs=$$(( n + runs )) -seed=$(FUZZ_SMOKE_SEED) \
 	        -max_len=$(FUZZ_MAX_LEN) -timeout=20 \
 	        -artifact_prefix=$(FUZZ_DIR)/artifacts/smoke-$$h/ $$out tests/fuzz/corpus/$$h \
 	        > $(FUZZ_DIR)/smoke/$$h.log 2>&1; then \
-	        echo "test-fuzz-smoke: $$h ok ($$n seeds + $(FUZZ_SMOKE_RUNS) runs)"; \
+	        echo "test-fuzz-smoke: $$h ok ($$n seeds + $$runs runs)"; \
 	    else \
 	        echo "test-fuzz-smoke: $$h FAILED ($(FUZZ_DIR)/smoke/$$h.log):"; \
 	        grep -A12 -E 'invariant failed|ERROR: |runtime error' $(FUZZ_DIR)/smoke/$$h.log | head -40; \

@@ -1,5 +1,5 @@
 # mk/ports.mk: the Linux (spidev + libgpiod) and MCP2210 (hidapi) ports and their tests.
-# Included by the top-level Makefile (see docs/BUILD-CONTRACT.md and docs/ports.md).
+# Included by the top-level Makefile (see docs/BUILD-CONTRACT.md and README.md (Linux and USB ports)).
 #
 #   build/zspan-linux                 spidev / bit-banged SPI + libgpiod (v1 or v2 API)
 #   build/zspan-mcp2210               MCP2210 USB-to-SPI bridge through hidapi (hidraw)

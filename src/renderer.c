@@ -214,8 +214,9 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
     if (rows < 1 || y0 < r->next_row || y0 >= (int)r->cfg.height ||
         rows > (int)r->cfg.height - y0)
         return ZS_ERR_ROW;
-    if (stride < (size_t)r->cfg.width * r->bpp)
-        return ZS_ERR_BUFFER;
+    if (stride < (size_t)r->cfg.width * r->bpp ||
+        stride > (SIZE_MAX - (size_t)r->cfg.width * r->bpp) / (size_t)rows)
+        return ZS_ERR_BUFFER; /* too small, or rows * stride past the address space */
     if (r->state == ZS_STATE_OPEN) {
         zs_raster_begin(r);
         r->state = ZS_STATE_RENDERING;

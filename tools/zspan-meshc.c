@@ -3,7 +3,7 @@
  * holding a zs_mesh in the core's format (int16 positions + Q16.16 scale,
  * uint16 indices, optional face/vertex colours and Q1.14 normals).
  *
- * Host tool, C99 + assimp (C API). See `zspan-meshc --help` and docs/firmware.md.
+ * Host tool, C99 + assimp (C API). See `zspan-meshc --help` and README.md (Meshes, firmware and the benchmark).
  *
  * Pipeline: import (validated) -> triangulate -> flatten the node hierarchy
  * (node transforms applied) -> merge identical vertices -> centre / fit /
@@ -111,6 +111,22 @@ static void *xrealloc(void *p, size_t n)
     if (!q)
         die(EXIT_LIMIT, "out of memory (%zu bytes)", n);
     return q;
+}
+
+/* Some malformed files make the importer loop forever (a 330-byte PLY does
+ * in assimp 5.2): give up after IMPORT_SECONDS (or $ZSPAN_MESHC_IMPORT_SECONDS)
+ * with a clear message. */
+#define IMPORT_SECONDS 30u
+static void on_import_timeout(int sig)
+{
+    static const char msg1[] = ": error: ";
+    static const char msg2[] = ": the model importer did not finish in time (a malformed file?)\n";
+    (void)sig;
+    (void)!write(2, g_prog, strlen(g_prog));
+    (void)!write(2, msg1, sizeof msg1 - 1);
+    (void)!write(2, g_input, strlen(g_input));
+    (void)!write(2, msg2, sizeof msg2 - 1);
+    _exit(EXIT_INPUT);
 }
 
 /* assimp aborts on a few internal assertions; turn that into a clear message. */
@@ -380,7 +396,14 @@ static void import_model(const options *o, model *m)
     ls.callback = log_cb;
     ls.user = NULL;
     aiAttachLogStream(&ls);
+    signal(SIGALRM, on_import_timeout);
+    {
+        const char *env = getenv("ZSPAN_MESHC_IMPORT_SECONDS");
+        unsigned secs = env ? (unsigned)strtoul(env, NULL, 10) : IMPORT_SECONDS;
+        alarm(secs ? secs : IMPORT_SECONDS);
+    }
     s = aiImportFile(o->input, aiProcess_ValidateDataStructure);
+    alarm(0);
     if (!s) {
         const char *err = aiGetErrorString();
         if (strstr(err, "bad_alloc") || strstr(err, "memory"))
@@ -809,7 +832,7 @@ static void write_files(const options *o, const model *m, const char *name, long
                         const double lo[3], const double hi[3], double radius,
                         const double xform_scale, const double xform_shift[3])
 {
-    char *cpath, *hpath, *guard, *upper, buf[64];
+    char *cpath, *hpath, *guard, *upper, *buf;
     const char *hname;
     FILE *fc, *fh;
     size_t len = strlen(o->output), i;
@@ -831,6 +854,8 @@ static void write_files(const options *o, const model *m, const char *name, long
     for (i = 0; name[i]; i++)
         upper[i] = (char)toupper((unsigned char)name[i]);
     upper[i] = 0;
+    /* declarations: the name plus fixed text and one count */
+    buf = xrealloc(NULL, strlen(name) + 96);
 
     fh = fopen(hpath, "w");
     if (!fh)
@@ -995,6 +1020,7 @@ static void write_files(const options *o, const model *m, const char *name, long
     free(hpath);
     free(guard);
     free(upper);
+    free(buf);
 }
 
 /* ------------------------------------------------------------------ */

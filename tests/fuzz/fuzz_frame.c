@@ -23,12 +23,12 @@
  *     inside [0, width) (the span fills are counted, see span_counted.c);
  *   - span mode == zline mode byte for byte, in every format (ties go to
  *     the earlier record in both modes and the colour planes are evaluated
- *     identically; see the notes in docs/robustness.md);
+ *     identically; see the notes in README.md (Robustness));
  *   - statistics: submitted == culled + rejected + empty + dropped + stored,
  *     records == setup-hook calls, pools never above their capacities,
  *     tris_drawn + edges_dropped == records after a complete frame, the
  *     geometry statistics equal in both modes;
- *   - the work bound of docs/robustness.md, per band;
+ *   - the work bound of README.md (Robustness), per band;
  *   - coverage (ID16): a pixel shows tag t only where a record of tag t
  *     covers its centre (half-space reference rasterizer, top-left rule), and
  *     with no edge-pool drop every covered pixel shows some tag;
@@ -52,6 +52,22 @@
 #define GUARD 32
 #define CANARY 0xA5
 #define BIT(s) (1u << (unsigned)(s))
+
+/* The config's feature flags (ZS_CFG_*), where the header has them. */
+#ifdef ZS_CFG_NO_ZLINE
+#define CFG_FLAGS(c) ((c).flags)
+#define ARENA_BYTES(c)                                                                  \
+    ZS_ARENA_BYTES_CFG((c).width, (c).height, (c).max_triangles, (c).max_vertices,      \
+                       (c).max_active_edges, (c).flags)
+#define NO_ZLINE(c) (((c).flags & ZS_CFG_NO_ZLINE) != 0)
+#define FLAT_ONLY(c) (((c).flags & ZS_CFG_FLAT_ONLY) != 0)
+#else
+#define ARENA_BYTES(c)                                                                  \
+    ZS_ARENA_BYTES((c).width, (c).height, (c).max_triangles, (c).max_vertices,          \
+                   (c).max_active_edges)
+#define NO_ZLINE(c) 0
+#define FLAT_ONLY(c) 0
+#endif
 
 /* ------------------------------------------------------------------ */
 /* Decoded input                                                        */
@@ -102,7 +118,8 @@ static int32_t fx_pick(fz_reader *d)
     case 1: return k_special[fz_u8(d) % NSPECIAL];
     case 6: return (int32_t)(int16_t)fz_u16(d) * 16;
     case 7: {
-        int64_t v = (int64_t)(int16_t)fz_u16(d) * ((int64_t)1 << (fz_u8(d) % 17u));
+        int64_t m = (int16_t)fz_u16(d);
+        int64_t v = m * ((int64_t)1 << (fz_u8(d) % 17u));
         return (int32_t)(v > INT32_MAX ? INT32_MAX : v < INT32_MIN ? INT32_MIN : v);
     }
     default: return (int32_t)(int8_t)fz_u8(d) * (ZS_FX_ONE / 4); /* -32 .. 31.75 */
@@ -111,8 +128,10 @@ static int32_t fx_pick(fz_reader *d)
 
 static zs_vec3 vec_pick(fz_reader *d)
 {
-    zs_fixed x = fx_pick(d), y = fx_pick(d);
-    return zs_vec3_make(x, y, fx_pick(d));
+    zs_fixed x = fx_pick(d);
+    zs_fixed y = fx_pick(d);
+    zs_fixed z = fx_pick(d);
+    return zs_vec3_make(x, y, z);
 }
 
 /* A model or view matrix: identity, a composition of simple transforms, or raw. */
@@ -125,7 +144,8 @@ static zs_mat34 mat_pick(fz_reader *d, int *has)
     case 0: *has = (k & 4u) ? 1 : 0; break;
     case 1:
     case 2: {
-        zs_fixed tx = (int8_t)fz_u8(d) * (ZS_FX_ONE / 8), ty = (int8_t)fz_u8(d) * (ZS_FX_ONE / 8);
+        zs_fixed tx = (int8_t)fz_u8(d) * (ZS_FX_ONE / 8);
+        zs_fixed ty = (int8_t)fz_u8(d) * (ZS_FX_ONE / 8);
         zs_fixed tz = (int8_t)fz_u8(d) * (ZS_FX_ONE / 8);
         zs_fixed ax = (zs_fixed)fz_u8(d) * (ZS_FX(360) / 256);
         zs_fixed ay = (zs_fixed)fz_u8(d) * (ZS_FX(360) / 256);
@@ -134,9 +154,10 @@ static zs_mat34 mat_pick(fz_reader *d, int *has)
         zs_fixed s = sk == 0 ? ZS_FX_ONE : (zs_fixed)sk * (ZS_FX_ONE / 32);
         zs_mat34 t = zs_mat34_translate(tx, ty, tz), rx = zs_mat34_rotate_x(ax),
                  ry = zs_mat34_rotate_y(ay), rz = zs_mat34_rotate_z(az), sc;
-        if (k & 0x80u)
-            sc = zs_mat34_scale(fx_pick(d), fx_pick(d), fx_pick(d));
-        else
+        if (k & 0x80u) {
+            zs_vec3 v = vec_pick(d);
+            sc = zs_mat34_scale(v.x, v.y, v.z);
+        } else
             sc = zs_mat34_scale(s, s, s);
         m = zs_mat34_mul(&rx, &sc);
         m = zs_mat34_mul(&ry, &m);
@@ -173,15 +194,18 @@ static void decode_camera(fz_reader *d, scene *s)
     if (s->cam_kind <= 1) {
         zs_vec3 eye, target, up;
         if (s->cam_kind == 0) { /* small, mostly sensible */
-            eye = zs_vec3_make((int8_t)fz_u8(d) * (ZS_FX_ONE / 16), (int8_t)fz_u8(d) * (ZS_FX_ONE / 16),
-                               (int8_t)fz_u8(d) * (ZS_FX_ONE / 16));
-            target = zs_vec3_make((int8_t)fz_u8(d) * (ZS_FX_ONE / 16),
-                                  (int8_t)fz_u8(d) * (ZS_FX_ONE / 16),
-                                  (int8_t)fz_u8(d) * (ZS_FX_ONE / 16) - ZS_FX_ONE);
+            int32_t v[6];
+            for (int i = 0; i < 6; i++)
+                v[i] = (int8_t)fz_u8(d) * (ZS_FX_ONE / 16);
+            eye = zs_vec3_make(v[0], v[1], v[2]);
+            target = zs_vec3_make(v[3], v[4], v[5] - ZS_FX_ONE);
             uint8_t u = fz_u8(d);
-            up = u < 192 ? zs_vec3_make(0, ZS_FX_ONE, 0)
-                         : zs_vec3_make((int8_t)fz_u8(d) * 256, (int8_t)fz_u8(d) * 256,
-                                        (int8_t)fz_u8(d) * 256);
+            up = zs_vec3_make(0, ZS_FX_ONE, 0);
+            if (u >= 192) {
+                for (int i = 0; i < 3; i++)
+                    v[i] = (int8_t)fz_u8(d) * 256;
+                up = zs_vec3_make(v[0], v[1], v[2]);
+            }
         } else {
             eye = vec_pick(d);
             target = vec_pick(d);
@@ -257,9 +281,12 @@ static void decode_camera(fz_reader *d, scene *s)
              c->has_projection, (int)st);
 }
 
-static unsigned shade_allowed(const zs_shade_params *p)
+static unsigned shade_allowed(const zs_shade_params *p, const zs_config *cfg)
 {
     unsigned m = 0;
+    (void)cfg;
+    if (FLAT_ONLY(*cfg) && (p->shading != ZS_SHADE_FLAT || p->fog.enabled))
+        m |= BIT(ZS_ERR_MODE);
     if (p->shading != ZS_SHADE_FLAT && p->shading != ZS_SHADE_GOURAUD)
         m |= BIT(ZS_ERR_MODE);
     if ((unsigned)p->format >= (unsigned)ZS_FMT_COUNT)
@@ -300,8 +327,10 @@ static void decode_shading(fz_reader *d, scene *s)
         for (int i = 0; i < ZS_MAX_LIGHTS; i++) {
             uint8_t lk = fz_u8(d);
             if (lk < 200) {
-                p->lights[i].direction = zs_vec3_make((int8_t)fz_u8(d) * 4096, (int8_t)fz_u8(d) * 4096,
-                                                      (int8_t)fz_u8(d) * 4096);
+                int32_t v[3];
+                for (int k2 = 0; k2 < 3; k2++)
+                    v[k2] = (int8_t)fz_u8(d) * 4096;
+                p->lights[i].direction = zs_vec3_make(v[0], v[1], v[2]);
                 p->lights[i].intensity = (int32_t)fz_u8(d) * (ZS_FX_ONE / 128);
             } else {
                 p->lights[i].direction = vec_pick(d);
@@ -321,7 +350,7 @@ static void decode_shading(fz_reader *d, scene *s)
             p->fog.end = p->fog.start + (int32_t)(1 + fz_u8(d)) * (ZS_FX_ONE / 16);
         }
     }
-    s->shade_allowed = shade_allowed(p);
+    s->shade_allowed = shade_allowed(p, &s->cfg);
 }
 
 static int16_t pos_pick(fz_reader *d, unsigned kind)
@@ -412,8 +441,16 @@ static int decode_scene(fz_reader *d, scene *s)
 {
     uint8_t k = fz_u8(d);
     if (k == 0xFF) { /* raw config: the error paths of zs_arena_bytes / zs_init */
-        zs_config c = zs_config_default(fz_u16(d), fz_u16(d), fz_u16(d), fz_u16(d), fz_u16(d));
+        uint16_t v[5];
+        for (int i = 0; i < 5; i++)
+            v[i] = fz_u16(d);
+        zs_config c = zs_config_default(v[0], v[1], v[2], v[3], v[4]);
         unsigned allowed = 0;
+#ifdef ZS_CFG_NO_ZLINE
+        c.flags = fz_u16(d);
+        if (c.flags & ~(unsigned)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY))
+            allowed |= BIT(ZS_ERR_ARGUMENT);
+#endif
         if (c.width == 0 || c.height == 0 || c.width > ZS_MAX_DIM || c.height > ZS_MAX_DIM)
             allowed |= BIT(ZS_ERR_SIZE);
         if (c.max_triangles == 0 || c.max_vertices == 0 || c.max_active_edges < 2 ||
@@ -423,9 +460,7 @@ static int decode_scene(fz_reader *d, scene *s)
         if (allowed) {
             FZ_CHECK(need == 0, "zs_arena_bytes of an invalid config = %zu", need);
         } else {
-            FZ_CHECK(need == ZS_ARENA_BYTES(c.width, c.height, c.max_triangles, c.max_vertices,
-                                            c.max_active_edges),
-                     "zs_arena_bytes %zu != ZS_ARENA_BYTES", need);
+            FZ_CHECK(need == ARENA_BYTES(c), "zs_arena_bytes %zu != ZS_ARENA_BYTES", need);
             allowed = BIT(ZS_ERR_ARENA_SMALL);
         }
         /* too small an arena (or an invalid config): nothing is touched */
@@ -444,10 +479,21 @@ static int decode_scene(fz_reader *d, scene *s)
             FZ_CHECK(small[i] == CANARY, "failed zs_init wrote arena byte %zu", i);
         return 0;
     }
-    s->cfg = zs_config_default((uint16_t)(1 + fz_u8(d) % MAXW), (uint16_t)(1 + fz_u8(d) % MAXH),
-                               (uint16_t)(1 + fz_u8(d) % 128u), (uint16_t)(1 + fz_u8(d) % 160u),
-                               (uint16_t)(2 + fz_u8(d) % 48u));
+    {
+        uint16_t w = (uint16_t)(1 + fz_u8(d) % MAXW);
+        uint16_t h = (uint16_t)(1 + fz_u8(d) % MAXH);
+        uint16_t nt = (uint16_t)(1 + fz_u8(d) % 128u);
+        uint16_t nv = (uint16_t)(1 + fz_u8(d) % 160u);
+        uint16_t ne = (uint16_t)(2 + fz_u8(d) % 48u);
+        s->cfg = zs_config_default(w, h, nt, nv, ne);
+    }
     s->arena_off = k % 8u;
+#ifdef ZS_CFG_NO_ZLINE
+    {
+        uint8_t f = fz_u8(d);
+        s->cfg.flags = (uint16_t)(f < 240 ? (f % 4u) : f); /* rarely an unknown bit */
+    }
+#endif
     decode_camera(d, s);
     uint8_t mk = fz_u8(d);
     s->bad_mode = mk >= 250 ? (int32_t)fz_u32(d) : -1;
@@ -530,26 +576,25 @@ typedef struct band_ctx {
 
 static uint64_t min64(uint64_t a, uint64_t b) { return a < b ? a : b; }
 
-/* The work bound (docs/robustness.md), for the rows rendered between two
- * snapshots. E = stats.max_active_edges (a running maximum: it bounds the edge
- * records of every row so far) and A bounds the active triangles of a row:
- * each has two sides on two distinct edge records and a record serves at most
- * two sides (one triangle it ends, one it starts), so A <= E, and A <= the
- * active pool (max_active_edges / 2 of the config) and the triangles drawn. */
+/* The work bound (README.md (Robustness)), for the rows rendered between two
+ * snapshots. stats.max_active_edges counts edge sides, two per active
+ * triangle (header), and is a running maximum: A = max_active_edges / 2
+ * bounds the active triangles of every row so far; the edge records of a row
+ * are at most 2A (an edge two triangles share is stored once). A is also at
+ * most the active pool (config max_active_edges / 2) and the triangles drawn. */
 static uint64_t active_bound(const zs_stats *b, const zs_config *cfg)
 {
-    uint64_t A = b->max_active_edges;
-    if (A > cfg->max_active_edges / 2u)
-        A = cfg->max_active_edges / 2u;
-    if (A > b->tris_drawn)
-        A = b->tris_drawn;
+    uint64_t A = b->max_active_edges / 2u;
+    FZ_CHECK(A <= cfg->max_active_edges / 2u && A <= b->tris_drawn,
+             "max_active_edges %u: more active triangles than the pool (%u) or drawn (%u)",
+             b->max_active_edges, cfg->max_active_edges / 2u, b->tris_drawn);
     return A;
 }
 
 static void check_work(const zs_stats *a, const zs_stats *b, uint64_t rows, uint64_t w,
                        zs_visibility mode, const zs_config *cfg)
 {
-    uint64_t E = b->max_active_edges, A = active_bound(b, cfg);
+    uint64_t A = active_bound(b, cfg), E = 2 * A;
     uint64_t X = b->crossings - a->crossings, S = b->spans - a->spans;
     uint64_t D = b->depth_evals - a->depth_evals, P = b->pixels_shaded - a->pixels_shaded;
     FZ_CHECK(b->rows - a->rows == rows, "rows %u -> %u for %llu rows", a->rows, b->rows,
@@ -702,7 +747,7 @@ static void run_frame(zs_renderer *r, const scene *s, zs_visibility mode, int id
             if (!(allowed & BIT(ZS_OK)))
                 p = zs_shade_default();
             p.format = ZS_FMT_ID16;
-            allowed = shade_allowed(&p);
+            allowed = shade_allowed(&p, &s->cfg);
         }
         st = zs_frame_shading(r, &p);
         FZ_CHECK(BIT(st) & allowed, "frame_shading returned %d (%s), allowed %#x", (int)st,
@@ -937,9 +982,18 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     int W = cfg->width, H = cfg->height;
 
     size_t need = zs_arena_bytes(cfg);
-    FZ_CHECK(need == ZS_ARENA_BYTES(W, H, cfg->max_triangles, cfg->max_vertices,
-                                    cfg->max_active_edges),
-             "zs_arena_bytes %zu", need);
+#ifdef ZS_CFG_NO_ZLINE
+    if (cfg->flags & ~(unsigned)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY)) {
+        static uint8_t some[64];
+        zs_renderer r0;
+        FZ_CHECK(need == 0, "zs_arena_bytes with unknown flags %#x = %zu", cfg->flags, need);
+        st = zs_init(&r0, some, sizeof some, cfg);
+        FZ_CHECK(st == ZS_ERR_ARGUMENT, "zs_init with unknown flags %#x returned %d", cfg->flags,
+                 (int)st);
+        return 0;
+    }
+#endif
+    FZ_CHECK(need == ARENA_BYTES(*cfg), "zs_arena_bytes %zu", need);
     /* exact-size heap block at the chosen misalignment: ASan sees any overrun */
     uint8_t *block = malloc(need + s->arena_off);
     uint8_t *arena = block + s->arena_off;
@@ -977,7 +1031,21 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     run_frame(&r, s, ZS_MODE_SPAN, 0, &g_span);
     if (g_verbose)
         dump_recs("span", &g_span.recs);
-    run_frame(&r, s, ZS_MODE_ZLINE, 0, &g_zline);
+    if (NO_ZLINE(*cfg)) {
+        /* the z-buffer line was left out: zline frames are refused and the
+         * span frame stands alone (still checked below against the reference) */
+        st = zs_frame_begin(&r, &s->cam, ZS_MODE_ZLINE);
+        FZ_CHECK(st == ZS_ERR_MODE, "ZS_MODE_ZLINE without a z-buffer line returned %d", (int)st);
+        zt_recs keep = g_zline.recs; /* each frame owns its record array */
+        g_zline = g_span;
+        g_zline.recs = keep;
+        zt_recs_clear(&g_zline.recs);
+        for (size_t i = 0; i < g_span.recs.n; i++)
+            zt_recs_hook(&g_zline.recs, g_span.recs.v[i].tag, g_span.recs.v[i].xy,
+                         g_span.recs.v[i].z);
+    } else {
+        run_frame(&r, s, ZS_MODE_ZLINE, 0, &g_zline);
+    }
     FZ_CHECK(g_span.fmt == g_zline.fmt && g_span.nrendered == g_zline.nrendered,
              "frames differ in format or rows");
     {
@@ -1089,8 +1157,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         zt_recs_clear(&g_big_recs);
         zs_set_setup_hook(&big, zt_recs_hook, &g_big_recs);
         FZ_CHECK(zs_frame_begin(&big, &s->cam, ZS_MODE_SPAN) == ZS_OK, "big frame_begin");
-        if (s->call_shading && (s->shade_allowed & BIT(ZS_OK)))
-            FZ_CHECK(zs_frame_shading(&big, &s->sp) == ZS_OK, "big shading");
+        /* (shading does not change what is stored) */
         for (int i = 0; i < s->nmesh; i++)
             zs_draw(&big, &s->mesh[i].m, s->mesh[i].has_model ? &s->mesh[i].model : NULL);
         const zs_stats *bs = zs_frame_stats(&big);

@@ -41,6 +41,7 @@ static int rr(int lo, int hi) { return lo + (int)(rnd() % (uint32_t)(hi - lo + 1
 
 typedef struct cfg {
     int w, h, tris, verts, edges;
+    int flags; /* ZS_CFG_*: 1 no z-buffer line, 2 flat only */
 } cfg;
 
 static void header(out *o, cfg c)
@@ -51,6 +52,7 @@ static void header(out *o, cfg c)
     u8(o, (unsigned)(c.tris - 1));
     u8(o, (unsigned)(c.verts - 1));
     u8(o, (unsigned)(c.edges - 2));
+    u8(o, (unsigned)c.flags);
 }
 
 /* Camera kind 0: eye at the origin looking down -Z, up +Y; fov in degrees
@@ -335,7 +337,7 @@ int main(int argc, char **argv)
     /* 1. two penetrating triangles, RGB565 BE, every band size */
     for (int band = 1; band <= 4; band++) {
         memset(&o, 0, sizeof o);
-        header(&o, (cfg){48, 40, 16, 16, 8});
+        header(&o, (cfg){48, 40, 16, 16, 8, 0});
         camera_std(&o, 60, 6, 6400);
         mode_ok(&o);
         shading(&o, 0, 0, 0, 0, 0, 0);
@@ -361,7 +363,7 @@ int main(int argc, char **argv)
         int w = rr(1, 64), h = rr(1, 64);
         int small = s % 3 == 0;
         header(&o, (cfg){w, h, small ? rr(1, 12) : 128, small ? rr(3, 30) : 160,
-                         small ? rr(2, 8) : 49});
+                         small ? rr(2, 8) : 49, s % 8 == 5 ? 1 : (s % 8 == 6 ? 2 : 0)});
         camera_std(&o, rr(20, 120), rr(1, 64), rr(400, 20000));
         mode_ok(&o);
         shading(&o, s % 4 != 0, s % 6, s % 2, rnd() & 0xFFFFFFu, s % 5 == 1, s % 7 == 2);
@@ -402,7 +404,7 @@ int main(int argc, char **argv)
     /* 3b. degenerate cameras: eye == target, fov 0 / 180, near == far */
     {
         memset(&o, 0, sizeof o);
-        header(&o, (cfg){16, 16, 8, 8, 4});
+        header(&o, (cfg){16, 16, 8, 8, 4, 0});
         u8(&o, 0);
         for (int i = 0; i < 3; i++)
             u8(&o, 0);
@@ -417,7 +419,7 @@ int main(int argc, char **argv)
         static const uint8_t fovsel[][3] = {{1, 0, 0}, {1, 8, 0}, {1, 9, 0}, {1, 18, 0}};
         for (size_t i = 0; i < sizeof fovsel / sizeof fovsel[0]; i++) {
             memset(&o, 0, sizeof o);
-            header(&o, (cfg){16, 16, 8, 8, 4});
+            header(&o, (cfg){16, 16, 8, 8, 4, 0});
             u8(&o, 2);  /* set_view */
             u8(&o, 0);  /* identity */
             u8(&o, 200); /* raw perspective */
@@ -430,7 +432,7 @@ int main(int argc, char **argv)
             write_seed(dir, n++, &o);
         }
         memset(&o, 0, sizeof o);
-        header(&o, (cfg){16, 16, 8, 8, 4});
+        header(&o, (cfg){16, 16, 8, 8, 4, 0});
         u8(&o, 2);
         u8(&o, 0);
         u8(&o, 255); /* near == far */
@@ -445,7 +447,7 @@ int main(int argc, char **argv)
     /* 3c. bad shading and meshes: unknown format, out-of-range index, zero scale */
     for (int v = 0; v < 3; v++) {
         memset(&o, 0, sizeof o);
-        header(&o, (cfg){32, 32, 32, 32, 16});
+        header(&o, (cfg){32, 32, 32, 32, 16, 0});
         camera_std(&o, 60, 6, 6400);
         mode_ok(&o);
         if (v == 0) {

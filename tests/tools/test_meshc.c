@@ -371,6 +371,25 @@ static void test_missing_and_usage(void **state)
     assert_true(res.exited && res.status == 0 && strstr(res.out, "usage:"));
 }
 
+/* Bugs the fuzzer found: a long mesh name overflowed a declaration buffer,
+ * and a malformed PLY made the importer loop forever. */
+static void test_fuzz_regressions(void **state)
+{
+    run_result res;
+    char dir[] = "/tmp/zspan-meshc-regress.XXXXXX";
+    const char *name = "a_mesh_name_much_longer_than_the_sixty_four_bytes_the_old_buffer_had";
+    (void)state;
+    assert_non_null(mkdtemp(dir));
+    run(&res, "'%s' -q -n %s -o '%s/long' '%s/OFF/Cube.off'", MESHC, name, dir, ASSIMP_MODELS);
+    assert_true(res.exited && res.status == 0);
+    run(&res, "grep -c '%s_positions' '%s/long.c'", name, dir);
+    assert_true(res.exited && res.status == 0);
+    run(&res, "ZSPAN_MESHC_IMPORT_SECONDS=2 '%s' -q -o '%s/hang' '%s/ply-hang.ply'", MESHC, dir,
+        TOOLS_DATA);
+    expect_error("importer hang", &res, 3, "did not finish in time");
+    run(&res, "rm -rf '%s'", dir);
+}
+
 static char tmpdir[64];
 
 static int make_tmpdir(void **state)
@@ -450,6 +469,7 @@ int main(void)
     const struct CMUnitTest errors[] = {
         cmocka_unit_test(test_invalid_folder),
         cmocka_unit_test(test_missing_and_usage),
+        cmocka_unit_test(test_fuzz_regressions),
         cmocka_unit_test(test_oversized),
     };
     int fails = cmocka_run_group_tests_name("meshc_round_trip", round_trip, NULL, NULL);

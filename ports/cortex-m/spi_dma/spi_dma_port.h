@@ -16,7 +16,7 @@
  *
  * With zs_panel_stream() and two line buffers, the renderer fills one line
  * while DMA sends the other. See ports/cortex-m/stm32f411/ for a complete
- * board (STM32F411 SPI1 + DMA2 stream 3) and docs/firmware.md.
+ * board (STM32F411 SPI1 + DMA2 stream 3) and README.md (Meshes, firmware and the benchmark).
  */
 #ifndef ZSPAN_SPI_DMA_PORT_H
 #define ZSPAN_SPI_DMA_PORT_H

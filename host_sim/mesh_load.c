@@ -456,3 +456,37 @@ oom:
     fprintf(stderr, "zspan-sim: out of memory\n");
     return -1;
 }
+
+zs_status sim_scene_frame(zs_renderer *r, const sim_scene *scene, zs_visibility mode,
+                          zs_shading shade, double deg, zs_format fmt)
+{
+    zs_camera cam;
+    zs_shade_params sp = zs_shade_default();
+    zs_mat34 rx, ry, m;
+    zs_status st;
+    size_t i;
+    st = zs_camera_look_at(&cam, zs_vec3_make(0, ZS_FX_RATIO(6, 10), ZS_FX_RATIO(28, 10)),
+                           zs_vec3_make(0, 0, 0), zs_vec3_make(0, ZS_FX(1), 0));
+    if (st == ZS_OK)
+        st = zs_camera_perspective(&cam, ZS_FX(45), ZS_FX_RATIO(1, 10), ZS_FX(20));
+    if (st == ZS_OK)
+        st = zs_frame_begin(r, &cam, mode);
+    if (st != ZS_OK)
+        return st;
+    sp.shading = shade;
+    sp.format = fmt;
+    sp.background = ZS_RGB(16, 20, 36);
+    sp.ambient = ZS_FX_RATIO(3, 10);
+    sp.light_count = 1;
+    sp.lights[0].direction = zs_vec3_make(ZS_FX(-1), ZS_FX(1), ZS_FX(2));
+    sp.lights[0].intensity = ZS_FX_RATIO(75, 100);
+    if ((st = zs_frame_shading(r, &sp)) != ZS_OK)
+        return st;
+    rx = zs_mat34_rotate_x(ZS_FX(-15));
+    ry = zs_mat34_rotate_y((zs_fixed)lround(deg * 65536.0));
+    m = zs_mat34_mul(&rx, &ry);
+    for (i = 0; i < scene->count; i++)
+        if ((st = zs_draw(r, &scene->chunks[i].mesh, &m)) != ZS_OK)
+            return st;
+    return ZS_OK;
+}

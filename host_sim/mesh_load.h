@@ -59,6 +59,12 @@ double sim_scene_radius(const sim_scene *scene, const double c[3]);
  * Returns 0, or -1 with a message (coordinates beyond +-32767 units). */
 int sim_scene_quantize(sim_scene *scene);
 
+/* Begins a frame of a loaded (quantised) scene as the animated viewers show
+ * it: fixed camera and light, the scene tilted 15 degrees and turned by deg
+ * about y; draws every chunk. */
+zs_status sim_scene_frame(zs_renderer *r, const sim_scene *scene, zs_visibility mode,
+                          zs_shading shade, double deg, zs_format fmt);
+
 void sim_scene_free(sim_scene *scene);
 
 #endif /* ZSPAN_SIM_MESH_LOAD_H */

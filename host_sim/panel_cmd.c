@@ -237,43 +237,6 @@ static int load_meshes(const panel_opts *o, sim_scene *scene)
     return 0;
 }
 
-/* Begins frame k of the mesh scene. */
-static zs_status mesh_frame(zs_renderer *r, const sim_scene *scene, const panel_opts *o, long k,
-                            zs_format fmt)
-{
-    zs_camera cam;
-    zs_shade_params sp = zs_shade_default();
-    zs_mat34 rx, ry, m;
-    zs_status st;
-    size_t i;
-    double deg = fmod(o->spin * (double)k, 360.0);
-
-    st = zs_camera_look_at(&cam, zs_vec3_make(0, ZS_FX_RATIO(6, 10), ZS_FX_RATIO(28, 10)),
-                           zs_vec3_make(0, 0, 0), zs_vec3_make(0, ZS_FX(1), 0));
-    if (st == ZS_OK)
-        st = zs_camera_perspective(&cam, ZS_FX(45), ZS_FX_RATIO(1, 10), ZS_FX(20));
-    if (st == ZS_OK)
-        st = zs_frame_begin(r, &cam, o->mode);
-    if (st != ZS_OK)
-        return st;
-    sp.shading = o->shade;
-    sp.format = fmt;
-    sp.background = ZS_RGB(16, 20, 36);
-    sp.ambient = ZS_FX_RATIO(3, 10);
-    sp.light_count = 1;
-    sp.lights[0].direction = zs_vec3_make(ZS_FX(-1), ZS_FX(1), ZS_FX(2));
-    sp.lights[0].intensity = ZS_FX_RATIO(75, 100);
-    if ((st = zs_frame_shading(r, &sp)) != ZS_OK)
-        return st;
-    rx = zs_mat34_rotate_x(ZS_FX(-15));
-    ry = zs_mat34_rotate_y((zs_fixed)lround(deg * 65536.0));
-    m = zs_mat34_mul(&rx, &ry);
-    for (i = 0; i < scene->count; i++)
-        if ((st = zs_draw(r, &scene->chunks[i].mesh, &m)) != ZS_OK)
-            return st;
-    return ZS_OK;
-}
-
 static int seq_path(char *buf, size_t n, const char *pattern, long k)
 {
     int len = snprintf(buf, n, pattern, (int)k);
@@ -416,7 +379,8 @@ int sim_panel_main(int argc, char **argv)
             long step = o.spin >= 3.0 ? lround(o.spin / 3.0) : 1;
             st = demo_frame(&r, demo, (uint32_t)(k * step), o.mode, o.shade, o.format);
         } else {
-            st = mesh_frame(&r, &scene, &o, k, o.format);
+            st = sim_scene_frame(&r, &scene, o.mode, o.shade, fmod(o.spin * (double)k, 360.0),
+                                 o.format);
         }
         if (st != ZS_OK) {
             fprintf(stderr, "zspan-sim panel: frame %ld: %s\n", k, zs_strerror(st));

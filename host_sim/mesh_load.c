@@ -490,3 +490,33 @@ zs_status sim_scene_frame(zs_renderer *r, const sim_scene *scene, zs_visibility 
             return st;
     return ZS_OK;
 }
+
+int sim_scene_fit_and_colour(sim_scene *scene)
+{
+    double lo[3], hi[3], c[3], radius;
+    size_t i;
+    int f;
+    if (sim_scene_bounds(scene, lo, hi)) {
+        for (f = 0; f < 3; f++)
+            c[f] = 0.5 * (lo[f] + hi[f]);
+        radius = sim_scene_radius(scene, c);
+        sim_scene_transform(scene, c, radius > 0.0 ? 1.0 / radius : 1.0);
+    }
+    if (sim_scene_quantize(scene) != 0)
+        return -1;
+    for (i = 0; i < scene->count; i++) {
+        sim_chunk *ch = &scene->chunks[i];
+        uint32_t t;
+        if (ch->vcol != NULL || ch->has_material_color || ch->tcount == 0)
+            continue;
+        ch->fcol = malloc((size_t)ch->tcount * sizeof *ch->fcol);
+        if (ch->fcol == NULL)
+            return -1;
+        for (t = 0; t < ch->tcount; t++) {
+            uint32_t h = (ch->first_tri + t + 1u) * 2654435761u;
+            ch->fcol[t] = ZS_RGB(96 + (h >> 24) % 160, 96 + (h >> 16) % 160, 96 + (h >> 8) % 160);
+        }
+        ch->mesh.face_colors = ch->fcol;
+    }
+    return 0;
+}

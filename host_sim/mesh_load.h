@@ -59,6 +59,12 @@ double sim_scene_radius(const sim_scene *scene, const double c[3]);
  * Returns 0, or -1 with a message (coordinates beyond +-32767 units). */
 int sim_scene_quantize(sim_scene *scene);
 
+/* The animated viewers' preparation of a loaded scene: bounding-box centre to
+ * the origin, farthest vertex at distance 1, quantised, and a hashed pastel
+ * colour per triangle for chunks without colours of their own. Returns 0, or
+ * -1 (a message for quantisation errors, none for out of memory). */
+int sim_scene_fit_and_colour(sim_scene *scene);
+
 /* Begins a frame of a loaded (quantised) scene as the animated viewers show
  * it: fixed camera and light, the scene tilted 15 degrees and turned by deg
  * about y; draws every chunk. */

@@ -200,8 +200,6 @@ static void print_trace(const emu_panel *e, const char *title)
 /* The mesh scene: loaded, fitted to the unit sphere, quantised, coloured. */
 static int load_meshes(const panel_opts *o, sim_scene *scene)
 {
-    double lo[3], hi[3], c[3], radius;
-    size_t i;
     int f;
     for (f = 0; f < o->nmeshes; f++)
         if (sim_scene_load(scene, o->meshes[f], o->shade == ZS_SHADE_GOURAUD) != 0)
@@ -211,30 +209,7 @@ static int load_meshes(const panel_opts *o, sim_scene *scene)
                 (unsigned long)scene->total_tris);
         return -1;
     }
-    if (sim_scene_bounds(scene, lo, hi)) {
-        for (f = 0; f < 3; f++)
-            c[f] = 0.5 * (lo[f] + hi[f]);
-        radius = sim_scene_radius(scene, c);
-        sim_scene_transform(scene, c, radius > 0.0 ? 1.0 / radius : 1.0);
-    }
-    if (sim_scene_quantize(scene) != 0)
-        return -1;
-    for (i = 0; i < scene->count; i++) {
-        sim_chunk *ch = &scene->chunks[i];
-        if (ch->vcol == NULL && !ch->has_material_color && ch->tcount > 0) {
-            uint32_t t;
-            ch->fcol = malloc((size_t)ch->tcount * sizeof *ch->fcol);
-            if (ch->fcol == NULL)
-                return -1;
-            for (t = 0; t < ch->tcount; t++) {
-                uint32_t h = (ch->first_tri + t + 1u) * 2654435761u;
-                ch->fcol[t] = ZS_RGB(96 + (h >> 24) % 160, 96 + (h >> 16) % 160,
-                                     96 + (h >> 8) % 160);
-            }
-            ch->mesh.face_colors = ch->fcol;
-        }
-    }
-    return 0;
+    return sim_scene_fit_and_colour(scene);
 }
 
 static int seq_path(char *buf, size_t n, const char *pattern, long k)

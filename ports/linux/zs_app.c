@@ -216,8 +216,6 @@ static int scene_load(scene *s, const zs_app_opts *o, const char *prog)
     return -1;
 #else
     {
-        double lo[3], hi[3], c[3], radius;
-        size_t i;
         int f;
         s->have_mesh = 1;
         for (f = 0; f < o->nmeshes; f++)
@@ -228,29 +226,8 @@ static int scene_load(scene *s, const zs_app_opts *o, const char *prog)
                     (unsigned long)s->mesh.total_tris, ZS_MAX_TRIANGLES / 3);
             return -1;
         }
-        if (sim_scene_bounds(&s->mesh, lo, hi)) {
-            for (f = 0; f < 3; f++)
-                c[f] = 0.5 * (lo[f] + hi[f]);
-            radius = sim_scene_radius(&s->mesh, c);
-            sim_scene_transform(&s->mesh, c, radius > 0.0 ? 1.0 / radius : 1.0);
-        }
-        if (sim_scene_quantize(&s->mesh) != 0)
+        if (sim_scene_fit_and_colour(&s->mesh) != 0)
             return -1;
-        for (i = 0; i < s->mesh.count; i++) {
-            sim_chunk *ch = &s->mesh.chunks[i];
-            uint32_t t;
-            if (ch->vcol != NULL || ch->has_material_color || ch->tcount == 0)
-                continue;
-            ch->fcol = malloc((size_t)ch->tcount * sizeof *ch->fcol);
-            if (ch->fcol == NULL)
-                return -1;
-            for (t = 0; t < ch->tcount; t++) {
-                uint32_t h = (ch->first_tri + t + 1u) * 2654435761u;
-                ch->fcol[t] = ZS_RGB(96 + (h >> 24) % 160, 96 + (h >> 16) % 160,
-                                     96 + (h >> 8) % 160);
-            }
-            ch->mesh.face_colors = ch->fcol;
-        }
         s->max_tris = s->mesh.total_tris * 3u + 64u;
         return 0;
     }

@@ -44,41 +44,108 @@ static void edge_init(zs_edge *e, const zs_vert *a, const zs_vert *b, int32_t y)
 }
 
 /* Depth planes hold window depth in Q40 (10 bits below the vertices' Q30, so
- * stepping across a row adds no visible error). Gradients are clamped to
- * 256 depth ranges per pixel: with evaluation points at most 2^13 pixels from
- * the origin every product stays below 2^62. A triangle steeper than that is
- * narrower than 1/256 pixel across its depth range; only its depth is off.
- * The gradient is num * 2^14 / area2 (num in Q30 * 1/16 px, area in 1/256 px^2). */
+ * stepping across a row adds no visible error). The gradient is
+ * num * 2^14 / area2 (num in Q30 * 1/16 px, area in 1/256 px^2), to 31
+ * significant bits, clamped to 256 depth ranges per pixel.
+ *
+ * Needles: along a thin triangle the two gradients can be huge and nearly
+ * cancel, so their rounding (or the clamp) would put the depth at a covered
+ * pixel centre far off. Such a plane is marked steep and gets its constant
+ * exactly on every row instead of by stepping: zs_anchor_depth evaluates the
+ * true plane at the row's first covered column. Within one row a steep plane
+ * needs no more: two covered centres of a row differ by at most one depth
+ * range, so wherever a row has two, |zdx| is that small and exact enough;
+ * where it has one, only the anchored column is ever evaluated. */
 #define ZS_DEPTH_GRADIENT_LIMIT ((int64_t)1 << 48)
+/* Steep when |zdx| * width + |zdy| * height (Q40 per pixel, times pixels)
+ * reaches 2^46: the gradients' rounding (2^-29 relative) could then move a
+ * covered centre's depth by 2^17 Q40 = 2^-23, approaching the 2^-20 that the
+ * documented tolerance allows. */
+#define ZS_STEEP_SPREAD ((int64_t)1 << 46)
 
-/* Depth plane of the triangle, origin at the pixel centre (ox, oy). */
-static void depth_plane(zs_active *a, const zs_vert *v[3], const zs_recip *area2, int32_t ox,
+static int64_t abs64(int64_t v)
+{
+    return v < 0 ? -v : v;
+}
+
+static int64_t max3_64(int64_t a, int64_t b, int64_t c)
+{
+    int64_t m = a > b ? a : b;
+    return m > c ? m : c;
+}
+
+static int64_t min3_64(int64_t a, int64_t b, int64_t c)
+{
+    int64_t m = a < b ? a : b;
+    return m < c ? m : c;
+}
+
+/* Depth plane of the triangle s (canonical order, sorted by y), origin at
+ * the pixel centre (ox, oy) next to s[0]; marks it steep where needed. */
+static void depth_plane(zs_active *a, const zs_vert *s[3], const zs_recip *area2, int32_t ox,
                         int32_t oy, int32_t y)
 {
-    int64_t dx1 = (int64_t)v[1]->x - v[0]->x, dy1 = (int64_t)v[1]->y - v[0]->y;
-    int64_t dx2 = (int64_t)v[2]->x - v[0]->x, dy2 = (int64_t)v[2]->y - v[0]->y;
-    int64_t dz1 = (int64_t)v[1]->z - v[0]->z, dz2 = (int64_t)v[2]->z - v[0]->z;
-    int64_t z0;
+    int64_t dx1 = (int64_t)s[1]->x - s[0]->x, dy1 = (int64_t)s[1]->y - s[0]->y;
+    int64_t dx2 = (int64_t)s[2]->x - s[0]->x, dy2 = (int64_t)s[2]->y - s[0]->y;
+    int64_t dz1 = (int64_t)s[1]->z - s[0]->z, dz2 = (int64_t)s[2]->z - s[0]->z;
+    int64_t z0, w16, h16;
     a->zdx = zs_recip_muldiv(area2, dz1 * dy2 - dz2 * dy1, 14, ZS_DEPTH_GRADIENT_LIMIT);
     a->zdy = zs_recip_muldiv(area2, dz2 * dx1 - dz1 * dx2, 14, ZS_DEPTH_GRADIENT_LIMIT);
+    /* extents in 1/16 px (< 2^17), plus a pixel for the centres around */
+    w16 = max3_64(0, dx1, dx2) - min3_64(0, dx1, dx2) + 16;
+    h16 = dy2 + 16;
+    /* gradients <= 2^48: at >> 4 each product stays below 2^62 */
+    if ((abs64(a->zdx) >> 4) * w16 + (abs64(a->zdy) >> 4) * h16 >= ZS_STEEP_SPREAD)
+        a->flags |= ZS_ACT_STEEP;
     /* depth at the origin pixel centre, from vertex 0 (less than a pixel away) */
-    z0 = (int64_t)v[0]->z * 1024 +
-         zs_asr64(a->zdx * (16 * (int64_t)ox + 8 - v[0]->x) +
-                      a->zdy * (16 * (int64_t)oy + 8 - v[0]->y),
+    z0 = (int64_t)s[0]->z * 1024 +
+         zs_asr64(a->zdx * (16 * (int64_t)ox + 8 - s[0]->x) +
+                      a->zdy * (16 * (int64_t)oy + 8 - s[0]->y),
                   4);
     a->zrow = z0 + a->zdy * ((int64_t)y - oy) - a->zdx * ox;
 }
 
-/* The triangle's vertices sorted by y (ties keep their order). */
-static void sort_by_y(const zs_renderer *r, const zs_tri *t, const zs_vert *v[3])
+/* The triangle's vertices in a canonical order: by y, then by x. Two
+ * vertices of a stored triangle never share both, so equal triangles get
+ * equal edges and equal planes however their vertices were rotated. */
+static void sort_canonical(const zs_renderer *r, const zs_tri *t, const zs_vert *v[3])
 {
     const zs_vert *pool = (const zs_vert *)r->verts, *tmp;
     v[0] = &pool[t->v[0]];
     v[1] = &pool[t->v[1]];
     v[2] = &pool[t->v[2]];
-    if (v[1]->y < v[0]->y) { tmp = v[0]; v[0] = v[1]; v[1] = tmp; }
-    if (v[2]->y < v[1]->y) { tmp = v[1]; v[1] = v[2]; v[2] = tmp; }
-    if (v[1]->y < v[0]->y) { tmp = v[0]; v[0] = v[1]; v[1] = tmp; }
+#define ZS_AFTER(p, q) ((p)->y > (q)->y || ((p)->y == (q)->y && (p)->x > (q)->x))
+    if (ZS_AFTER(v[0], v[1])) { tmp = v[0]; v[0] = v[1]; v[1] = tmp; }
+    if (ZS_AFTER(v[1], v[2])) { tmp = v[1]; v[1] = v[2]; v[2] = tmp; }
+    if (ZS_AFTER(v[0], v[1])) { tmp = v[0]; v[0] = v[1]; v[1] = tmp; }
+#undef ZS_AFTER
+}
+
+void zs_anchor_depth(const zs_renderer *r, zs_active *a, int32_t xa, int32_t y)
+{
+    const zs_vert *s[3];
+    int64_t px = 16 * (int64_t)xa + 8, py = 16 * (int64_t)y + 8, d, l0, l1, l2, z;
+    sort_canonical(r, &((const zs_tri *)r->tris)[a->tri], s);
+    /* twice the area, and the barycentric numerators of s[1] and s[2] at
+     * the centre (edge functions; all below 2^35) */
+    d = ((int64_t)s[1]->x - s[0]->x) * ((int64_t)s[2]->y - s[0]->y) -
+        ((int64_t)s[2]->x - s[0]->x) * ((int64_t)s[1]->y - s[0]->y);
+    l1 = ((int64_t)s[0]->x - s[2]->x) * (py - s[2]->y) -
+         ((int64_t)s[0]->y - s[2]->y) * (px - s[2]->x);
+    l2 = ((int64_t)s[1]->x - s[0]->x) * (py - s[0]->y) -
+         ((int64_t)s[1]->y - s[0]->y) * (px - s[0]->x);
+    if (d < 0) {
+        d = -d;
+        l1 = -l1;
+        l2 = -l2;
+    }
+    l0 = d - l1 - l2;
+    z = (int64_t)s[0]->z * 1024;
+    /* a centre outside is never evaluated: any bounded value will do */
+    if (l0 >= 0 && l1 >= 0 && l2 >= 0)
+        z += zs_muldiv64(((int64_t)s[1]->z - s[0]->z) * 1024, l1, d, 1) +
+             zs_muldiv64(((int64_t)s[2]->z - s[0]->z) * 1024, l2, d, 1);
+    a->zrow = z - a->zdx * xa;
 }
 
 /* Takes an edge from the pool for a -> b, owned by ai on one side, and
@@ -103,11 +170,10 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     zs_tri *t = &((zs_tri *)r->tris)[ti];
     const zs_vert *pool = (const zs_vert *)r->verts;
     const zs_vert *v[3], *s[3];
-    uint16_t ai;
+    uint16_t ai, long_edge, short_edge;
     zs_active *a;
     int64_t cross;
     zs_recip area2;
-    int32_t ox, oy;
     int long_left;
     if (r->n_active_free < 1 || r->n_edge_free < 2) {
         r->stats.edges_dropped++; /* capacity policy: the triangle is skipped */
@@ -115,8 +181,9 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     }
     ai = ((uint16_t *)r->active_free)[--r->n_active_free];
     a = &((zs_active *)r->active)[ai];
-    sort_by_y(r, t, s);
-    /* which side of the long edge top -> bottom the middle vertex lies on */
+    sort_canonical(r, t, s);
+    /* twice the area in canonical order; its sign says which side of the
+     * long edge top -> bottom the middle vertex lies on */
     cross = ((int64_t)s[1]->x - s[0]->x) * ((int64_t)s[2]->y - s[0]->y) -
             ((int64_t)s[2]->x - s[0]->x) * ((int64_t)s[1]->y - s[0]->y);
     long_left = cross > 0; /* middle vertex to the right: the long edge leads */
@@ -125,29 +192,39 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     a->set_pos = 0;
     a->flags = long_left ? ZS_ACT_LONG_LEFT : 0;
     a->y_end = (int16_t)zs_first_row(s[2]->y);
-    new_edge(r, ai, long_left, s[0], s[2], y);
+    long_edge = new_edge(r, ai, long_left, s[0], s[2], y);
     if (y < zs_first_row(s[1]->y))
-        new_edge(r, ai, !long_left, s[0], s[1], y);
+        short_edge = new_edge(r, ai, !long_left, s[0], s[1], y);
     else
-        new_edge(r, ai, !long_left, s[1], s[2], y);
-
+        short_edge = new_edge(r, ai, !long_left, s[1], s[2], y);
+    zs_recip_init(&area2, cross);
+    /* the depth plane from the canonical order: equal triangles, equal planes */
+    depth_plane(a, s, &area2, zs_asr32(s[0]->x, 4), zs_asr32(s[0]->y, 4), y);
+    if (a->flags & ZS_ACT_STEEP)
+        zs_anchor_depth(r, a,
+                        zs_clampi(((zs_edge *)r->edges)[long_left ? long_edge : short_edge].x,
+                                  0, r->cfg.width),
+                        y);
+    /* colours in submission order (per-vertex shades follow t->v); the
+     * record's area is negative in that order (a front face) */
     v[0] = &pool[t->v[0]];
     v[1] = &pool[t->v[1]];
     v[2] = &pool[t->v[2]];
-    zs_recip_init(&area2, zs_area2(v[0], v[1], v[2]));
-    ox = zs_asr32(v[0]->x, 4);
-    oy = zs_asr32(v[0]->y, 4);
-    depth_plane(a, v, &area2, ox, oy, y);
-    zs_shade_setup(r, a, r->acolor ? &((zs_active_color *)r->acolor)[ai] : 0, t, v, ox, oy,
-                   &area2, y);
+    area2.neg = 1;
+    zs_shade_setup(r, a, r->acolor ? &((zs_active_color *)r->acolor)[ai] : 0, t, v,
+                   zs_asr32(v[0]->x, 4), zs_asr32(v[0]->y, 4), &area2, y);
     r->stats.tris_drawn++;
     return 1;
 }
 
 void zs_continue_edge(zs_renderer *r, uint16_t ai, int32_t y)
 {
-    const zs_active *a = &((const zs_active *)r->active)[ai];
+    zs_active *a = &((zs_active *)r->active)[ai];
     const zs_vert *s[3];
-    sort_by_y(r, &((const zs_tri *)r->tris)[a->tri], s);
-    new_edge(r, ai, !(a->flags & ZS_ACT_LONG_LEFT), s[1], s[2], y);
+    int left_side = !(a->flags & ZS_ACT_LONG_LEFT);
+    uint16_t ei;
+    sort_canonical(r, &((const zs_tri *)r->tris)[a->tri], s);
+    ei = new_edge(r, ai, left_side, s[1], s[2], y);
+    if (left_side && (a->flags & ZS_ACT_STEEP))
+        zs_anchor_depth(r, a, zs_clampi(((zs_edge *)r->edges)[ei].x, 0, r->cfg.width), y);
 }

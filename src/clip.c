@@ -2,21 +2,21 @@
  * far planes and the guard band (x, y within +-guard * w). */
 #include "zs_internal.h"
 
-unsigned zs_outcode(const zs_renderer *r, int32_t xc, int32_t yc, int32_t w)
+unsigned zs_outcode(const zs_renderer *r, int64_t xc, int64_t yc, int64_t w)
 {
     unsigned oc = 0;
-    int64_t gw = (int64_t)r->guard * w;
+    int64_t gw = r->guard * w;
     if (w < r->cam.near_z)
         oc |= ZS_OUT_NEAR;
     if (w > r->cam.far_z)
         oc |= ZS_OUT_FAR;
     if (xc < -gw || xc > gw || yc < -gw || yc > gw)
         oc |= ZS_OUT_GUARD;
-    if (xc < -(int64_t)w)
+    if (xc < -w)
         oc |= ZS_OUT_LEFT;
     if (xc > w)
         oc |= ZS_OUT_RIGHT;
-    if (yc < -(int64_t)w)
+    if (yc < -w)
         oc |= ZS_OUT_BOTTOM;
     if (yc > w)
         oc |= ZS_OUT_TOP;
@@ -26,10 +26,10 @@ unsigned zs_outcode(const zs_renderer *r, int32_t xc, int32_t yc, int32_t w)
 /* Signed distance to plane p (inside when >= 0). */
 static int64_t plane_dist(const zs_renderer *r, int p, const zs_svert *v)
 {
-    int64_t gw = (int64_t)r->guard * v->w;
+    int64_t gw = r->guard * v->w;
     switch (p) {
-    case 0: return (int64_t)v->w - r->cam.near_z;
-    case 1: return (int64_t)r->cam.far_z - v->w;
+    case 0: return v->w - r->cam.near_z;
+    case 1: return r->cam.far_z - v->w;
     case 2: return gw + v->xc;
     case 3: return gw - v->xc;
     case 4: return gw + v->yc;
@@ -55,26 +55,33 @@ static uint32_t lerp_shade(uint32_t a, uint32_t b, int64_t t_q28)
     return out;
 }
 
+/* in + (out - in) * din / (din - dout), rounded: exact whatever the range
+ * of the clip coordinates (they are carried unsaturated). */
+static int64_t lerp64(int64_t in, int64_t out, int64_t din, int64_t den)
+{
+    return in + zs_muldiv64(out - in, din, den, 1);
+}
+
 /* The point where edge in -> out crosses plane p. Always interpolated from
  * the inside vertex so that two triangles sharing the edge get the same point. */
 static zs_svert intersect(const zs_renderer *r, int p, const zs_svert *in, const zs_svert *out,
                           int64_t din, int64_t dout)
 {
     zs_svert v;
-    int64_t t = zs_floor_div64(din * ((int64_t)1 << 28), din - dout); /* in [0, 2^28] */
-    v.xc = lerp32(in->xc, out->xc, t);
-    v.yc = lerp32(in->yc, out->yc, t);
-    v.w = lerp32(in->w, out->w, t);
-    v.shade = lerp_shade(in->shade, out->shade, t);
+    int64_t den = din - dout; /* din >= 0 > dout */
+    v.xc = lerp64(in->xc, out->xc, din, den);
+    v.yc = lerp64(in->yc, out->yc, din, den);
+    v.w = lerp64(in->w, out->w, din, den);
+    v.shade = lerp_shade(in->shade, out->shade, zs_muldiv64((int64_t)1 << 28, din, den, 0));
     v.pool = ZS_NONE;
     /* put the new vertex exactly on the plane */
     switch (p) {
     case 0: v.w = r->cam.near_z; break;
     case 1: v.w = r->cam.far_z; break;
-    case 2: v.xc = zs_sat32(-(int64_t)r->guard * v.w, 0); break;
-    case 3: v.xc = zs_sat32((int64_t)r->guard * v.w, 0); break;
-    case 4: v.yc = zs_sat32(-(int64_t)r->guard * v.w, 0); break;
-    default: v.yc = zs_sat32((int64_t)r->guard * v.w, 0); break;
+    case 2: v.xc = -r->guard * v.w; break;
+    case 3: v.xc = r->guard * v.w; break;
+    case 4: v.yc = -r->guard * v.w; break;
+    default: v.yc = r->guard * v.w; break;
     }
     return v;
 }

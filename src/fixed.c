@@ -69,6 +69,59 @@ int64_t zs_recip_muldiv(const zs_recip *rc, int64_t num, int bits, int64_t limit
     return ((num < 0) != rc->neg) ? -(int64_t)q : (int64_t)q;
 }
 
+/* round(a * b / 65536) for |a| < 2^47, |b| <= 2^31: a split so that no
+ * product passes 2^62 (a * b itself may not fit 64 bits). */
+int64_t zs_mul_q16_wide(int64_t a, int32_t b)
+{
+    int64_t hi = zs_asr64(a, 16), lo = a - hi * 65536; /* lo in [0, 65536) */
+    return hi * b + zs_asr64(lo * b + 32768, 16);
+}
+
+/* The 128-bit product of two 64-bit unsigned values. */
+static void mul_64x64(uint64_t a, uint64_t b, uint64_t *hi, uint64_t *lo)
+{
+    uint64_t a0 = a & 0xFFFFFFFFu, a1 = a >> 32, b0 = b & 0xFFFFFFFFu, b1 = b >> 32;
+    uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
+    uint64_t mid = (p00 >> 32) + (p01 & 0xFFFFFFFFu) + (p10 & 0xFFFFFFFFu);
+    *lo = (mid << 32) | (p00 & 0xFFFFFFFFu);
+    *hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+}
+
+int64_t zs_muldiv64(int64_t a, int64_t b, int64_t c, int round)
+{
+    uint64_t ua = a < 0 ? (uint64_t)0 - (uint64_t)a : (uint64_t)a;
+    uint64_t ub = (uint64_t)b, uc = (uint64_t)c, q, rem;
+    if (ua < ((uint64_t)1 << 31) && ub < ((uint64_t)1 << 32)) {
+        uint64_t p = ua * ub; /* below 2^63: the common case, one division */
+        q = p / uc;
+        rem = p - q * uc;
+    } else {
+        uint64_t hi, lo;
+        int i;
+        mul_64x64(ua, ub, &hi, &lo);
+        if (hi == 0) {
+            q = lo / uc;
+            rem = lo - q * uc;
+        } else {
+            /* b <= c keeps the quotient below 2^63, so hi < c: long
+             * division by bits, the remainder staying below 2c < 2^64 */
+            q = 0;
+            rem = hi;
+            for (i = 63; i >= 0; i--) {
+                rem = (rem << 1) | ((lo >> i) & 1u);
+                q <<= 1;
+                if (rem >= uc) {
+                    rem -= uc;
+                    q |= 1u;
+                }
+            }
+        }
+    }
+    if (round && rem >= uc - rem)
+        q++;
+    return a < 0 ? -(int64_t)q : (int64_t)q;
+}
+
 /* Public results saturate to the full int32 range. */
 static int32_t clamp32(int64_t v)
 {

@@ -7,11 +7,16 @@
 #define REJECT_MASK                                                                       \
     (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_LEFT | ZS_OUT_RIGHT | ZS_OUT_BOTTOM | ZS_OUT_TOP)
 
+/* Eye coordinates beyond this (2^30 units) are far outside the documented
+ * limits; they are clamped so that the clip transform cannot overflow. */
+#define EYE_LIMIT ((int64_t)1 << 46)
+
 typedef struct draw_ctx {
     zs_renderer *r;
     const zs_mesh *mesh;
     zs_mat34 model;     /* model -> world, for normals */
-    zs_mat34 mv;        /* model -> eye */
+    zs_mat34 mv;        /* model -> eye; its translation column is unused */
+    int64_t mv_t[3];    /* model -> eye translation, Q16, unsaturated */
     int lit;            /* lighting changes colours */
     int vertex_light;   /* lighting per vertex (Gouraud with vertex normals) */
     int vertex_color;   /* Gouraud with per-vertex colours */
@@ -33,7 +38,7 @@ static void prepare_clip_rows(draw_ctx *c)
 {
     const zs_renderer *r = c->r;
     const int64_t sign[3] = {1, 1, -1}; /* w = -z_eye */
-    const int64_t proj[3] = {r->proj_sx, r->proj_sy, 65536};
+    const int32_t proj[3] = {r->proj_sx, r->proj_sy, 65536};
     int k, j;
     c->fast = abs64(c->mesh->scale) < ((int64_t)1 << 30);
     for (k = 0; k < 3 && c->fast; k++) {
@@ -45,7 +50,7 @@ static void prepare_clip_rows(draw_ctx *c)
             }
             c->clip[k][j] = (int32_t)(m * c->mesh->scale);
         }
-        c->clip_t[k] = zs_asr64((int64_t)c->mv.m[k][3] * proj[k] + 32768, 16) * sign[k];
+        c->clip_t[k] = zs_mul_q16_wide(c->mv_t[k], proj[k]) * sign[k];
     }
 }
 
@@ -54,8 +59,35 @@ static int32_t sat_count(zs_renderer *r, int64_t v)
     return zs_sat32(v, &r->stats.saturated);
 }
 
-/* Model-space vertex i to clip space (Q16.16). */
-static void to_clip(const draw_ctx *c, uint32_t i, int32_t *xc, int32_t *yc, int32_t *w)
+/* Model -> eye: the view times the model matrix. The 3x3 part saturates
+ * (counted) only for scales beyond Q16.16; the translation is kept in 64
+ * bits, as world and eye positions within the limits may lie more than
+ * 32768 units apart. */
+static void model_view(draw_ctx *c)
+{
+    const zs_mat34 *v = &c->r->cam.view, *m = &c->model;
+    int k, j;
+    for (k = 0; k < 3; k++) {
+        int32_t t[3];
+        for (j = 0; j < 3; j++) {
+            int32_t col[3];
+            col[0] = m->m[0][j];
+            col[1] = m->m[1][j];
+            col[2] = m->m[2][j];
+            c->mv.m[k][j] = sat_count(c->r, zs_dot3_q16(v->m[k], col));
+        }
+        t[0] = m->m[0][3];
+        t[1] = m->m[1][3];
+        t[2] = m->m[2][3];
+        c->mv.m[k][3] = 0;
+        c->mv_t[k] = zs_dot3_q16(v->m[k], t) + v->m[k][3];
+    }
+}
+
+/* Model-space vertex i to clip space (Q16.16, not saturated: clip
+ * coordinates may pass 2^31 where a narrow field of view or a far vertex
+ * magnifies eye coordinates; outcodes and the clipper take them whole). */
+static void to_clip(const draw_ctx *c, uint32_t i, int64_t *xc, int64_t *yc, int64_t *w)
 {
     if (c->fast) { /* 32x16-bit products accumulated in 64 bits */
         const int16_t *pos = c->mesh->positions + 3u * i;
@@ -64,20 +96,28 @@ static void to_clip(const draw_ctx *c, uint32_t i, int32_t *xc, int32_t *yc, int
         int64_t sx = (int64_t)m0[0] * px + (int64_t)m0[1] * py + (int64_t)m0[2] * pz + 32768;
         int64_t sy = (int64_t)m1[0] * px + (int64_t)m1[1] * py + (int64_t)m1[2] * pz + 32768;
         int64_t sw = (int64_t)m2[0] * px + (int64_t)m2[1] * py + (int64_t)m2[2] * pz + 32768;
-        *xc = sat_count(c->r, zs_asr64(sx, 16) + c->clip_t[0]);
-        *yc = sat_count(c->r, zs_asr64(sy, 16) + c->clip_t[1]);
-        *w = sat_count(c->r, zs_asr64(sw, 16) + c->clip_t[2]);
-    } else { /* general path: saturate after each stage */
+        *xc = zs_asr64(sx, 16) + c->clip_t[0];
+        *yc = zs_asr64(sy, 16) + c->clip_t[1];
+        *w = zs_asr64(sw, 16) + c->clip_t[2];
+    } else { /* general path: model coordinates saturate (counted) */
         zs_renderer *r = c->r;
         const int16_t *pos = c->mesh->positions + 3u * i;
-        int32_t p[3], e[3];
+        int32_t p[3];
+        int64_t e[3];
         int k;
         for (k = 0; k < 3; k++)
             p[k] = sat_count(r, (int64_t)pos[k] * c->mesh->scale);
-        for (k = 0; k < 3; k++)
-            e[k] = sat_count(r, zs_dot3_q16(c->mv.m[k], p) + c->mv.m[k][3]);
-        *xc = sat_count(r, zs_asr64((int64_t)e[0] * r->proj_sx + 32768, 16));
-        *yc = sat_count(r, zs_asr64((int64_t)e[1] * r->proj_sy + 32768, 16));
+        for (k = 0; k < 3; k++) {
+            /* within the limits |e| < 2^34; beyond them clamp (counted) so
+             * that the products below stay defined */
+            e[k] = zs_dot3_q16(c->mv.m[k], p) + c->mv_t[k];
+            if (e[k] > EYE_LIMIT || e[k] < -EYE_LIMIT) {
+                r->stats.saturated++;
+                e[k] = e[k] > 0 ? EYE_LIMIT : -EYE_LIMIT;
+            }
+        }
+        *xc = zs_mul_q16_wide(e[0], r->proj_sx);
+        *yc = zs_mul_q16_wide(e[1], r->proj_sy);
         *w = -e[2];
     }
 }
@@ -116,7 +156,7 @@ static zs_fixed light_intensity(const draw_ctx *c, const int64_t n_model[3])
     return (zs_fixed)total;
 }
 
-static uint32_t fog_byte(const zs_renderer *r, int32_t w)
+static uint32_t fog_byte(const zs_renderer *r, int64_t w)
 {
     const zs_fog *f = &r->shade.fog;
     int64_t t;
@@ -124,12 +164,12 @@ static uint32_t fog_byte(const zs_renderer *r, int32_t w)
         return 0;
     if (w >= f->end)
         return 255;
-    t = ((int64_t)w - f->start) * 255 / ((int64_t)f->end - f->start);
+    t = (w - f->start) * 255 / ((int64_t)f->end - f->start);
     return (uint32_t)t;
 }
 
 /* Per-vertex shade word: RGB (colour or light multiplier) and fog. */
-static uint32_t vertex_shade(const draw_ctx *c, uint32_t i, int32_t w)
+static uint32_t vertex_shade(const draw_ctx *c, uint32_t i, int64_t w)
 {
     uint32_t rgb = c->vertex_color ? (c->mesh->vertex_colors[i] & WHITE) : WHITE;
     if (c->vertex_light) {
@@ -243,7 +283,8 @@ static int clip_and_setup(draw_ctx *c, uint16_t base, const uint16_t idx[3], uin
     color = face_color(c, t, idx);
     for (k = 0; k < n; k++)
         if (out[k].pool == ZS_NONE)
-            out[k].pool = zs_project_vertex(r, out[k].xc, out[k].yc, out[k].w, out[k].shade);
+            out[k].pool = zs_project_vertex(r, out[k].xc, out[k].yc, (int32_t)out[k].w,
+                                            out[k].shade);
     for (k = 1; k + 1 < n; k++) {
         int piece;
         if (out[0].pool == ZS_NONE || out[k].pool == ZS_NONE || out[k + 1].pool == ZS_NONE)
@@ -276,7 +317,7 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     c.r = r;
     c.mesh = m;
     c.model = model ? *model : zs_mat34_identity();
-    c.mv = zs_mat34_mul(&r->cam.view, &c.model);
+    model_view(&c);
     prepare_clip_rows(&c);
     c.lit = r->shade.light_count > 0 || r->shade.ambient != ZS_FX_ONE;
     c.vertex_light = r->shade.shading == ZS_SHADE_GOURAUD && c.lit && m->vertex_normals != 0;
@@ -293,14 +334,14 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     r->stats.verts_dropped += m->vertex_count - vfit;
     for (i = 0; i < vfit; i++) {
         zs_vert *v = &pool[base + i];
-        int32_t xc, yc, w;
+        int64_t xc, yc, w;
         to_clip(&c, i, &xc, &yc, &w);
         if (r->vshade)
             ((uint32_t *)r->vshade)[base + i] = vertex_shade(&c, i, w);
         if (zs_outcode(r, xc, yc, w) & (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_GUARD))
             v->z = ZS_VERT_UNPROJECTED;
-        else
-            zs_project(r, xc, yc, w, &v->x, &v->y, &v->z);
+        else /* near <= w <= far: 32 bits */
+            zs_project(r, xc, yc, (int32_t)w, &v->x, &v->y, &v->z);
     }
     r->n_verts = (uint16_t)(base + vfit);
     r->stats.verts_stored = r->n_verts;

@@ -178,10 +178,16 @@ static void add_new_edges(zs_renderer *r, int32_t y)
     r->n_sorted = (uint16_t)n;
 }
 
-static inline void step_planes(zs_renderer *r, uint16_t ai)
+/* Planes of active triangle ai to the next row; xa is its left edge's
+ * column there (a steep plane is anchored at it), or -1 when the left edge
+ * is about to be replaced (zs_continue_edge anchors then). */
+static inline void step_planes(zs_renderer *r, uint16_t ai, int32_t xa, int32_t next)
 {
     zs_active *a = &((zs_active *)r->active)[ai];
-    a->zrow += a->zdy;
+    if (!(a->flags & ZS_ACT_STEEP))
+        a->zrow += a->zdy;
+    else if (xa >= 0)
+        zs_anchor_depth(r, a, zs_clampi(xa, 0, r->cfg.width), next);
     if (a->flags & ZS_ACT_GOURAUD) {
         zs_active_color *c = &((zs_active_color *)r->acolor)[ai];
         c->crow[0] += (uint32_t)c->cdy[0];
@@ -201,7 +207,7 @@ static void retire_edge(zs_renderer *r, zs_edge *e, int32_t next, uint16_t *cont
         if (next >= a->y_end) {
             afree[r->n_active_free++] = e->lead;
         } else {
-            step_planes(r, e->lead);
+            step_planes(r, e->lead, -1, next);
             cont[(*n_cont)++] = e->lead;
         }
     }
@@ -237,7 +243,7 @@ static void step_edges(zs_renderer *r, int32_t y)
             e->x++;
         }
         if (e->lead != ZS_NONE)
-            step_planes(r, e->lead);
+            step_planes(r, e->lead, zs_clampi(e->x, 0, r->cfg.width), next);
         if (e->x >= prev_x) {
             prev_x = e->x;
             ael[kept++] = ei;

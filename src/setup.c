@@ -22,21 +22,31 @@ static unsigned norm_shift(uint32_t v)
 #endif
 }
 
+/* floor(v * inv / 2^sh) for |v| * inv < 2^64: the magnitude is formed
+ * unsigned, as |v| may reach guard * w and the product 2^63. */
+static int64_t mul_floor_shift(int64_t v, uint64_t inv, unsigned sh)
+{
+    if (v >= 0)
+        return (int64_t)(((uint64_t)v * inv) >> sh);
+    return -(int64_t)(((((uint64_t)0 - (uint64_t)v) * inv) + (((uint64_t)1 << sh) - 1u)) >> sh);
+}
+
 /* One division per vertex: 1/w as a normalised reciprocal, then products.
  *   w * 2^s in [2^30, 2^31), inv = 2^61 / (w * 2^s) in (2^30, 2^31],
  *   xc / w = xc * inv * 2^(s - 61).
+ * Inside the guard band |xc|, |yc| <= guard * w, so xc / w fits Q28 easily.
  * Window depth z = far (w - near) / ((far - near) w) = A (1 - near / w) with
  * A = far / (far - near) precomputed per frame (depth_scale, Q30). */
-void zs_project(const zs_renderer *r, int32_t xc, int32_t yc, int32_t w, int16_t *x,
+void zs_project(const zs_renderer *r, int64_t xc, int64_t yc, int32_t w, int16_t *x,
                 int16_t *y, uint32_t *z)
 {
     int64_t hw = 8 * (int64_t)r->cfg.width; /* half the width in 1/16 px */
     int64_t hh = 8 * (int64_t)r->cfg.height;
     unsigned s = norm_shift((uint32_t)w);
-    int64_t inv = (int64_t)(((uint64_t)1 << 61) / ((uint32_t)w << s));
-    int64_t nx = zs_asr64((int64_t)xc * inv, 33u - s); /* xc / w in Q28 */
-    int64_t ny = zs_asr64((int64_t)yc * inv, 33u - s);
-    int64_t q = ((int64_t)r->cam.near_z * inv) >> (31u - s); /* near / w in Q30 */
+    uint64_t inv = ((uint64_t)1 << 61) / ((uint32_t)w << s);
+    int64_t nx = mul_floor_shift(xc, inv, 33u - s); /* xc / w in Q28 */
+    int64_t ny = mul_floor_shift(yc, inv, 33u - s);
+    int64_t q = (int64_t)(((uint64_t)r->cam.near_z * inv) >> (31u - s)); /* near / w, Q30 */
     int64_t zz;
     /* the guard band keeps these within int16 (clamped all the same) */
     *x = (int16_t)zs_clampi((int32_t)(hw + zs_asr64(hw * nx + ((int64_t)1 << 27), 28)), -32767,
@@ -54,7 +64,7 @@ void zs_project(const zs_renderer *r, int32_t xc, int32_t yc, int32_t w, int16_t
     *z = (uint32_t)(zz > ((int64_t)1 << 30) ? ((int64_t)1 << 30) : zz);
 }
 
-uint16_t zs_project_vertex(zs_renderer *r, int32_t xc, int32_t yc, int32_t w, uint32_t shade)
+uint16_t zs_project_vertex(zs_renderer *r, int64_t xc, int64_t yc, int32_t w, uint32_t shade)
 {
     zs_vert *v;
     if (r->n_verts >= r->cfg.max_vertices) {

@@ -77,6 +77,7 @@ typedef struct zs_active_color {
 
 #define ZS_ACT_GOURAUD 0x01u   /* colour varies across the triangle */
 #define ZS_ACT_LONG_LEFT 0x02u /* the long edge is its left edge */
+#define ZS_ACT_STEEP 0x04u     /* needle: zrow anchored exactly on every row */
 
 /* Compile-time checks that the header's sizes match the records. */
 typedef char zs_check_vert[(sizeof(zs_vert) == ZS_VERTEX_BYTES) ? 1 : -1];
@@ -102,6 +103,12 @@ void zs_recip_init(zs_recip *rc, int64_t d); /* d != 0 */
 /* num * 2^bits / d to 31 significant bits (toward zero), clamped to +-limit;
  * for |num| < 2^62. */
 int64_t zs_recip_muldiv(const zs_recip *rc, int64_t num, int bits, int64_t limit);
+/* round(a * b / 65536) for |a| < 2^47 and any int32 b. */
+int64_t zs_mul_q16_wide(int64_t a, int32_t b);
+/* a * b / c for c > 0 and 0 <= b <= c (so |result| <= |a|), |a| < 2^63:
+ * toward zero, or rounded half away from zero when round is non-zero.
+ * Exact through a 128-bit product where a * b does not fit 64 bits. */
+int64_t zs_muldiv64(int64_t a, int64_t b, int64_t c, int round);
 /* round(sum a[i] * b[i] / 65536) without overflow for any int32 inputs. */
 int64_t zs_dot3_q16(const int32_t a[3], const int32_t b[3]);
 /* Shrink a vector by powers of two until every |component| < limit. */
@@ -113,15 +120,17 @@ int zs_normalize3(const int64_t v[3], int32_t out[3]);
 /* geometry.c: transform, light, cull, clip, hand triangles to setup */
 /* setup.c */
 typedef struct zs_svert {        /* a vertex on its way to setup */
-    int32_t xc, yc, w;           /* clip space, Q16.16 */
+    int64_t xc, yc, w;           /* clip space, Q16.16, never saturated */
     uint32_t shade;
     uint16_t pool;               /* pool index when already projected, else ZS_NONE */
 } zs_svert;
 enum { ZS_SETUP_STORED, ZS_SETUP_CULLED, ZS_SETUP_EMPTY, ZS_SETUP_REJECTED, ZS_SETUP_DROPPED };
 /* Projects a clip-space vertex into the pool; returns its index or ZS_NONE. */
-uint16_t zs_project_vertex(zs_renderer *r, int32_t xc, int32_t yc, int32_t w, uint32_t shade);
+/* The vertex must be inside the near, far and guard-band planes (its outcode
+ * has none of ZS_OUT_NEAR, ZS_OUT_FAR, ZS_OUT_GUARD): then w fits 32 bits. */
+uint16_t zs_project_vertex(zs_renderer *r, int64_t xc, int64_t yc, int32_t w, uint32_t shade);
 /* Projected vertex data without storing it (same arithmetic as above). */
-void zs_project(const zs_renderer *r, int32_t xc, int32_t yc, int32_t w, int16_t *x,
+void zs_project(const zs_renderer *r, int64_t xc, int64_t yc, int32_t w, int16_t *x,
                 int16_t *y, uint32_t *z);
 /* Twice the signed screen area (1/256 px^2); < 0 for a front face. */
 int64_t zs_area2(const zs_vert *a, const zs_vert *b, const zs_vert *c);
@@ -146,12 +155,16 @@ int zs_clip_polygon(const zs_renderer *r, const zs_svert *in, int n, zs_svert *o
 #define ZS_OUT_RIGHT 0x20u
 #define ZS_OUT_BOTTOM 0x40u
 #define ZS_OUT_TOP 0x80u
-unsigned zs_outcode(const zs_renderer *r, int32_t xc, int32_t yc, int32_t w);
+unsigned zs_outcode(const zs_renderer *r, int64_t xc, int64_t yc, int64_t w);
 
 /* activate.c: edges and planes of a triangle reaching its first row */
 /* Makes the triangle's planes and its two edges, appended to the active edge
  * list's unsorted tail; 0 when the pools are full (the triangle is skipped). */
 int zs_activate(zs_renderer *r, uint16_t tri, int32_t y);
+/* Sets the row constant of a steep plane exactly: the true depth at the
+ * centre of column xa on row y when the triangle covers it (xa: its first
+ * covered column there, clamped to the screen). */
+void zs_anchor_depth(const zs_renderer *r, zs_active *a, int32_t xa, int32_t y);
 /* Appends the lower short edge of active triangle ai, starting at row y. */
 void zs_continue_edge(zs_renderer *r, uint16_t ai, int32_t y);
 /* raster.c: rows, edges, the active edge list */

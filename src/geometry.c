@@ -257,6 +257,22 @@ static void count_outcome(zs_stats *s, int outcome)
     }
 }
 
+/* Is a before b in lexicographic order of (w, yc, xc)? */
+static int svert_before(const zs_svert *a, const zs_svert *b)
+{
+    if (a->w != b->w)
+        return a->w < b->w;
+    if (a->yc != b->yc)
+        return a->yc < b->yc;
+    return a->xc < b->xc;
+}
+
+static int first_vertex(const zs_svert in[3])
+{
+    int k = svert_before(&in[1], &in[0]) ? 1 : 0;
+    return svert_before(&in[2], &in[k]) ? 2 : k;
+}
+
 /* A triangle with a vertex outside near/far/guard: reject or clip it. */
 static int clip_and_setup(draw_ctx *c, uint16_t base, const uint16_t idx[3], uint32_t t,
                           uint16_t tag)
@@ -277,6 +293,19 @@ static int clip_and_setup(draw_ctx *c, uint16_t base, const uint16_t idx[3], uin
     if (and_codes & REJECT_MASK)
         return ZS_SETUP_REJECTED;
     r->stats.tris_clipped++;
+    /* start from a canonical vertex: the same triangle with its vertices
+     * rotated is then cut into the same pieces (equal planes, so exact ties
+     * still go to the earlier triangle) */
+    k = first_vertex(in);
+    if (k != 0) {
+        zs_svert rot[3];
+        rot[0] = in[k];
+        rot[1] = in[(k + 1) % 3];
+        rot[2] = in[(k + 2) % 3];
+        in[0] = rot[0];
+        in[1] = rot[1];
+        in[2] = rot[2];
+    }
     n = zs_clip_polygon(r, in, 3, out);
     if (n < 3)
         return ZS_SETUP_REJECTED;

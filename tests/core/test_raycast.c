@@ -10,9 +10,8 @@
  * Near ties are excluded: a pixel where the nearest and the runner-up of
  * another tag differ in window depth by less than TOL (2^-20) may go either
  * way. Their number is printed and must stay below MAX_EXCLUDED_FRACTION of
- * the covered pixels; everything else must agree exactly. Pixels where the
- * nearest has a coplanar duplicate with the same vertices in another order
- * (its plane may round differently) accept either copy and are counted apart.
+ * the covered pixels; everything else must agree exactly. Duplicates with
+ * the same vertices in another order are exact ties too: the first wins.
  */
 #include "zt_test.h"
 
@@ -27,7 +26,7 @@
 #define MAX_EXCLUDED_FRACTION 0.005
 #define SEED 0x4A7CA57000000003ull
 
-static unsigned long g_bad[2], g_near_disagree[2], g_perm_px[2], g_perm_other[2], g_px[2], g_excluded[2], g_dup_ties[2], g_tris, g_records, g_clipped;
+static unsigned long g_bad[2], g_near_disagree[2], g_px[2], g_excluded[2], g_dup_ties[2], g_tris, g_records, g_clipped;
 
 static void run(zs_visibility mode)
 {
@@ -80,25 +79,12 @@ static void run(zs_visibility mode)
                 uint16_t want = cast.owner[p];
                 if (want) g_px[m]++;
                 if (cast.exact[p] && cast.z2[p] - cast.z1[p] >= TOL) g_dup_ties[m]++;
-                if (cast.perm[p]) g_perm_px[m]++;
                 int near_tie = want && cast.z2[p] - cast.z1[p] < TOL;
                 if (near_tie) g_excluded[m]++;
                 if (id == want) continue;
                 if (near_tie) {
                     g_near_disagree[m]++;
                     continue;
-                }
-                if (cast.perm[p]) {
-                    /* a coplanar duplicate with its vertices in another order:
-                     * either copy may win */
-                    int ok = 0;
-                    for (size_t i = 0; i < recs.n && !ok; i++)
-                        ok = recs.v[i].tag == id && zt_covers(recs.v[i].xy, x, y) &&
-                             zt_same_vertex_set(&recs.v[i], &recs.v[cast.best[p]]);
-                    if (ok) {
-                        g_perm_other[m]++;
-                        continue;
-                    }
                 }
                 /* report the first few in detail, fail after the whole run */
                 if (g_bad[m]++ >= 3) continue;
@@ -149,14 +135,12 @@ int main(void)
     fflush(stderr);
     printf("test_raycast: seed %llx, %d scenes %dx%d, %lu triangles (%lu records, %lu clipped), "
            "near-tie tolerance 2^-20: span %lu of %lu covered pixels excluded (%.4f%%, %lu of them "
-           "disagreeing), zline %lu of %lu (%.4f%%, %lu disagreeing); exact-duplicate ties decided by order: span %lu, zline %lu; "
-           "pixels of coplanar duplicates in another vertex order (either may win, not counted "
-           "as near ties): %lu, later copy won: span %lu, zline %lu; disagreeing pixels: span %lu, "
-           "zline %lu; %d failed\n",
+           "disagreeing), zline %lu of %lu (%.4f%%, %lu disagreeing); exact-duplicate ties (any vertex order) decided by order: span %lu, zline %lu; "
+           "disagreeing pixels: span %lu, zline %lu; %d failed\n",
            (unsigned long long)SEED, NSCENES, W, H, g_tris, g_records, g_clipped, g_excluded[0],
            g_px[0], g_px[0] ? 100.0 * g_excluded[0] / g_px[0] : 0.0, g_near_disagree[0],
            g_excluded[1], g_px[1], g_px[1] ? 100.0 * g_excluded[1] / g_px[1] : 0.0,
-           g_near_disagree[1], g_dup_ties[0], g_dup_ties[1], g_perm_px[0], g_perm_other[0], g_perm_other[1], g_bad[0], g_bad[1], rc);
+           g_near_disagree[1], g_dup_ties[0], g_dup_ties[1], g_bad[0], g_bad[1], rc);
     fflush(stdout);
     return rc;
 }

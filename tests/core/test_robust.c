@@ -130,7 +130,7 @@ static unsigned long vs_raycast(const rframe *f, const char *what)
             int p = y * W + x;
             uint16_t id = zt_id_at(f->img, W, x, y), want = cast.owner[p];
             if (want) g_px++;
-            int tie = want && (cast.z2[p] - cast.z1[p] < TOL || cast.perm[p]);
+            int tie = want && cast.z2[p] - cast.z1[p] < TOL;
             if (tie) g_excluded++;
             if (id == want || tie) continue;
             if (bad++ < 3) {

@@ -177,7 +177,6 @@ void zt_cast_alloc(zt_cast *c, int w, int h)
     c->z1 = (double *)zt_xrealloc(NULL, n * sizeof *c->z1);
     c->z2 = (double *)zt_xrealloc(NULL, n * sizeof *c->z2);
     c->exact = (uint8_t *)zt_xrealloc(NULL, n);
-    c->perm = (uint8_t *)zt_xrealloc(NULL, n);
     c->best = (int32_t *)zt_xrealloc(NULL, n * sizeof *c->best);
 }
 
@@ -187,14 +186,8 @@ void zt_cast_free(zt_cast *c)
     free(c->z1);
     free(c->z2);
     free(c->exact);
-    free(c->perm);
     free(c->best);
     memset(c, 0, sizeof *c);
-}
-
-static int zt_same_geometry(const zt_rec *a, const zt_rec *b)
-{
-    return memcmp(a->xy, b->xy, sizeof a->xy) == 0 && memcmp(a->z, b->z, sizeof a->z) == 0;
 }
 
 int zt_same_vertex_set(const zt_rec *a, const zt_rec *b)
@@ -224,7 +217,6 @@ void zt_raycast(const zt_recs *rs, zt_cast *c)
         c->z1[p] = 2.0;
         c->z2[p] = 2.0;
         c->exact[p] = 0;
-        c->perm[p] = 0;
     }
     /* pass 1: nearest; strict < keeps the first-hooked record on exact ties */
     for (size_t i = 0; i < rs->n; i++) {
@@ -236,7 +228,11 @@ void zt_raycast(const zt_recs *rs, zt_cast *c)
                 if (!zt_covers(t->xy, x, y)) continue;
                 size_t p = (size_t)y * (size_t)w + (size_t)x;
                 double z = zt_depth_at(t, x, y);
-                if (z < c->z1[p]) {
+                /* a copy of the current nearest (any vertex order) is an
+                 * exact tie: the one hooked first keeps it, whatever the
+                 * last bits of the two double evaluations say */
+                if (z < c->z1[p] &&
+                    !(best[p] >= 0 && zt_same_vertex_set(t, &rs->v[best[p]]))) {
                     c->z1[p] = z;
                     best[p] = (int32_t)i;
                 }
@@ -255,12 +251,8 @@ void zt_raycast(const zt_recs *rs, zt_cast *c)
                 if (!zt_covers(t->xy, x, y)) continue;
                 const zt_rec *b = &rs->v[best[p]];
                 if (t->tag == b->tag) continue;
-                if (zt_same_geometry(t, b)) {
-                    c->exact[p] = 1;
-                    continue;
-                }
                 if (zt_same_vertex_set(t, b)) {
-                    c->perm[p] = 1;
+                    c->exact[p] = 1;
                     continue;
                 }
                 double z = zt_depth_at(t, x, y);

@@ -78,14 +78,11 @@ typedef struct zt_cast {
     uint16_t *owner;   /* tag of the nearest record, 0 = none */
     double *z1;        /* its depth */
     double *z2;        /* depth of the nearest record with another tag (or 2.0) */
-    uint8_t *exact;    /* 1 if another tag's record is an exact geometric
-                          duplicate of the nearest (identical xy and z, same
-                          vertex order): the renderer sees an exact tie that
-                          submission order decides; such records are left out
-                          of z2 */
-    uint8_t *perm;     /* 1 if another tag's record has the nearest's vertices
-                          in another order (a coplanar duplicate whose plane
-                          may round differently); left out of z2 */
+    uint8_t *exact;    /* 1 if another tag's record has the same three
+                          vertices (xy and z) as the nearest, in any order:
+                          an exact tie that submission order decides (the
+                          renderer builds planes from a canonical vertex
+                          order); such records are left out of z2 */
     int32_t *best;     /* index of the nearest record, -1 = none */
 } zt_cast;
 
@@ -94,8 +91,8 @@ int zt_same_vertex_set(const zt_rec *a, const zt_rec *b);
 
 void zt_cast_alloc(zt_cast *c, int w, int h);
 void zt_cast_free(zt_cast *c);
-/* Nearest surface at every pixel centre; exact double ties go to the record
- * hooked first. */
+/* Nearest surface at every pixel centre; exact double ties, and copies of a
+ * record in any vertex order, go to the record hooked first. */
 void zt_raycast(const zt_recs *rs, zt_cast *c);
 
 /* ---------------- scene builder ---------------- */

@@ -204,7 +204,9 @@ typedef struct zs_camera {
     uint8_t has_view, has_projection;
 } zs_camera;
 
-/* View from eye toward target; up need not be perpendicular. All Q16.16. */
+/* View from eye toward target; up need not be perpendicular. All Q16.16.
+ * Keep the eye within 32767 units of the origin (Euclidean) so that the view
+ * translation fits Q16.16 (it is clamped beyond). */
 zs_status zs_camera_look_at(zs_camera *cam, zs_vec3 eye, zs_vec3 target, zs_vec3 up);
 /* Perspective: vertical fov in (0, 180) degrees, 0 < near < far (Q16.16).
  * The fov must also be wide enough that cot(fov/2) fits Q16.16 (above about
@@ -224,7 +226,9 @@ typedef uint32_t zs_color;   /* 0x00RRGGBB */
 
 /* A mesh in flash. Model-space position of vertex i is
  * positions[3i .. 3i+2] * scale (scale in Q16.16, so the product is Q16.16);
- * model coordinates must stay within +-32767 units. Normals are unit vectors
+ * model coordinates must stay within +-32767 units. Model and view matrices
+ * may place them farther apart: eye and clip coordinates are carried in 64
+ * bits, so any view of such a scene is exact (README: Exactness and its limits). Normals are unit vectors
  * in Q1.14 (16384 == 1.0). Colour sources, first present wins: per-vertex
  * colours in Gouraud mode, per-face colours, per-vertex colours (averaged per
  * face in flat mode), then `color`. */
@@ -323,7 +327,10 @@ typedef struct zs_stats {
     uint32_t verts_stored;     /* vertex pool use */
     uint32_t verts_dropped;    /* vertices that did not fit the pool */
     uint32_t edges_dropped;    /* triangles not activated: edge pool full */
-    uint32_t saturated;        /* coordinates clamped to the representable range */
+    uint32_t saturated;        /* values clamped beyond the documented limits
+                                  (model coordinates past +-32768 units, a model-
+                                  view 3x3 entry past Q16.16, eye coordinates
+                                  past 2^30 units); 0 within them */
     uint32_t rows;             /* rows rendered */
     uint32_t spans;            /* spans written (background spans included) */
     uint32_t max_active_edges; /* most edge sides active on one row (2 per

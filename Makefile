@@ -1,12 +1,14 @@
 # zspan top-level Makefile (GNU make). See docs/BUILD-CONTRACT.md.
 #
 #   make          build/libzspan.a, build/asan/libzspan.a, build/zspan-sim, $(ALL_TARGETS)
-#   make test     everything, then core tests, check-core, $(TEST_SUITES), $(TEST_TARGETS);
+#   make test     everything, then core tests, check-core, check-core-flags, $(TEST_SUITES),
+#                 $(TEST_TARGETS);
 #                 ends with one line "N passed, N failed"
 #   make demo     renders the built-in scene to out/demo.png, then $(DEMO_TARGETS)
 #   make bench    runs $(BENCH_TARGETS)
 #   make deps     installs the Debian packages in $(DEB_PACKAGES) that are missing (as root)
 #   make check-core  Cortex-M0 build of src/*.c: no float, no malloc, no stdio; .text size
+#   make check-core-flags  every rule compiling src/ passes $(CORE_REQUIRED_FLAGS)
 #   make clean
 
 SHELL := /bin/bash
@@ -42,11 +44,16 @@ SIM_EXTRA_LIBS :=
 # The core
 # ---------------------------------------------------------------------------
 CORE_SRCS := $(sort $(wildcard src/*.c))
-CORE_WARN := -std=c99 -Wall -Wextra -Werror -Wconversion -ffreestanding -fno-strict-aliasing
+# Flags every rule that compiles src/ must pass, whatever else it adds: the core
+# keeps its own record types in the caller's arena whatever type the caller
+# declared it with (include/zspan/zspan.h, zs_init). `make check-core-flags`
+# (part of make test) fails if a rule of the Makefile or mk/*.mk lacks them.
+CORE_REQUIRED_FLAGS := -fno-strict-aliasing
+CORE_WARN := -std=c99 -Wall -Wextra -Werror -Wconversion -ffreestanding $(CORE_REQUIRED_FLAGS)
 CORE_CFLAGS := $(CORE_WARN) -O2 -Iinclude
 ASAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all
 CORE_ASAN_CFLAGS := $(CORE_WARN) $(ASAN_FLAGS) -g -O1 -Iinclude
-M0_CFLAGS := -mcpu=cortex-m0 -mthumb -mfloat-abi=soft -Os -std=c99 -ffreestanding -fno-strict-aliasing \
+M0_CFLAGS := -mcpu=cortex-m0 -mthumb -mfloat-abi=soft -Os -std=c99 -ffreestanding $(CORE_REQUIRED_FLAGS) \
              -Wall -Wextra -Werror -Iinclude
 
 LIB := $(BUILD)/libzspan.a
@@ -86,11 +93,13 @@ CORE_TEST_SRCS := $(sort $(wildcard tests/core/*.c))
 CORE_TEST_COMMON_SRCS := $(sort $(wildcard tests/core/common/*.c))
 CORE_TEST_COMMON_OBJS := $(patsubst tests/core/common/%.c,$(BUILD)/tests/core/common/%.o,$(CORE_TEST_COMMON_SRCS))
 CORE_TEST_BINS := $(patsubst tests/core/%.c,$(BUILD)/tests/core/%,$(CORE_TEST_SRCS))
-# Core tests may load meshes (assimp) and write images (libpng), like the simulator.
-CORE_TEST_CFLAGS = $(TEST_CFLAGS) $(shell $(PKG_CONFIG) --cflags assimp libpng 2>/dev/null)
+# Core tests may load meshes (assimp) and write images (libpng), like the simulator;
+# ZT_TOP_DIR lets a suite read the tree's files (test_status reads the header).
+CORE_TEST_CFLAGS = $(TEST_CFLAGS) -DZT_TOP_DIR='"$(CURDIR)"' \
+                   $(shell $(PKG_CONFIG) --cflags assimp libpng 2>/dev/null)
 CORE_TEST_LIBS = $(shell $(PKG_CONFIG) --libs assimp libpng 2>/dev/null) $(TEST_LIBS)
 
-.PHONY: all deps test test-core check-core demo bench clean core-present \
+.PHONY: all deps test test-core check-core check-core-flags demo bench clean core-present \
         $(TEST_TARGETS) $(DEMO_TARGETS) $(BENCH_TARGETS)
 
 all: $(LIB) $(ASAN_LIB) $(SIM) $(ALL_TARGETS) | deps
@@ -175,10 +184,11 @@ $(BUILD)/tests/core/%: $(BUILD)/tests/core/%.o $(CORE_TEST_COMMON_OBJS) $(ASAN_L
 test-core: $(CORE_TEST_BINS) | deps
 	@$(SUITE_RUNNER) $(CORE_TEST_BINS)
 
-# Runs, in order: the core suites, check-core, the TEST_SUITES of mk/*.mk, then
+# Runs, in order: the core suites, check-core, check-core-flags, the TEST_SUITES of mk/*.mk, then
 # each of TEST_TARGETS; keeps going after a failure; the last line is the total.
 test: all $(CORE_TEST_BINS) $(TEST_SUITES) | deps
-	@MAKE='$(MAKE)' $(SUITE_RUNNER) $(CORE_TEST_BINS) make:check-core $(TEST_SUITES) \
+	@MAKE='$(MAKE)' $(SUITE_RUNNER) $(CORE_TEST_BINS) make:check-core make:check-core-flags \
+	    $(TEST_SUITES) \
 	    $(addprefix make:,$(TEST_TARGETS))
 
 $(BUILD)/m0/%.o: src/%.c | deps
@@ -187,6 +197,11 @@ $(BUILD)/m0/%.o: src/%.c | deps
 
 check-core: $(M0_OBJS) | deps core-present
 	@ARM_NM='$(ARM_NM)' ARM_SIZE='$(ARM_SIZE)' CC='$(CC)' bash tests/check_core.sh $(M0_OBJS)
+
+# Every rule of the Makefile and mk/*.mk that compiles src/ passes $(CORE_REQUIRED_FLAGS)
+# (asks make for the rules and their commands; builds nothing).
+check-core-flags: | core-present
+	@MAKE_CMD='$(MAKE)' bash tests/check_core_flags.sh
 
 # ---------------------------------------------------------------------------
 # Demo and benchmarks

@@ -39,7 +39,7 @@ BENCH_HOST_CFLAGS := -std=c99 -Wall -Wextra -Werror -O2 -g -Iinclude -Ibench
 PORT_DIR := ports/cortex-m
 PORT_SRCS := $(PORT_DIR)/startup.c $(PORT_DIR)/semihost.c $(PORT_DIR)/systick.c
 PORT_HDRS := $(PORT_DIR)/port.h
-FW_COMMON := -mthumb -mfloat-abi=soft -std=c99 -ffreestanding -fno-strict-aliasing -Wall -Wextra -Werror \
+FW_COMMON := -mthumb -mfloat-abi=soft -std=c99 -ffreestanding $(CORE_REQUIRED_FLAGS) -Wall -Wextra -Werror \
              -ffunction-sections -fdata-sections -Iinclude -I$(PORT_DIR) -Ibench -I$(BENCH_GEN)
 # Core optimisation per CPU (reported by the bench): M4 -O2, M0 -Os (flash).
 FW_M4_CPU := -mcpu=cortex-m4

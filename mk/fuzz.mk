@@ -1,5 +1,6 @@
-# mk/fuzz.mk: libFuzzer harnesses (clang, AddressSanitizer, UBSan) and the
-# bad-input unit tests. Included by the top-level Makefile (docs/BUILD-CONTRACT.md).
+# mk/fuzz.mk: libFuzzer harnesses (clang, AddressSanitizer, UBSan). Included by
+# the top-level Makefile (docs/BUILD-CONTRACT.md). The bad-input unit tests are
+# core suites (tests/core/test_api.c, test_extremes.c, test_pools.c).
 #
 #   make fuzz [FUZZ_SECONDS=60] [FUZZ_ONLY="frame panel"]
 #        runs every harness for FUZZ_SECONDS each, one after the other, with
@@ -11,7 +12,6 @@
 #        from -seed=1: well under a minute for all of them.
 #   make fuzz-merge        folds build/fuzz/corpus/<h>/ into the checked-in
 #        corpus (libFuzzer -merge=1 keeps only inputs that add coverage).
-#   build/tests/robust/*   cmocka suites (TEST_SUITES): tests/robust/*.c
 #
 # The harnesses (tests/fuzz/fuzz_<h>.c):
 #   frame  whole frames from bytes: camera, meshes, pools, shading, bands
@@ -30,7 +30,7 @@ FUZZ_DIR := $(BUILD)/fuzz
 FUZZ_SAN := -fsanitize=address,undefined -fno-sanitize-recover=all
 # The core as the fuzzer sees it: coverage-instrumented, sanitized, and with
 # span.c's fills counted (tests/fuzz/span_counted.c replaces span.o).
-FUZZ_CORE_CFLAGS := -std=c99 -Wall -Wextra -Wconversion -ffreestanding -fno-strict-aliasing \
+FUZZ_CORE_CFLAGS := -std=c99 -Wall -Wextra -Wconversion -ffreestanding $(CORE_REQUIRED_FLAGS) \
                     -g -O1 -Iinclude \
                     $(FUZZ_SAN) -fsanitize=fuzzer-no-link
 FUZZ_CFLAGS := -std=c99 -Wall -Wextra -Werror -g -O1 -Iinclude -Itests/core/common \
@@ -58,17 +58,6 @@ FUZZ_RPAREN := )
 FUZZ_EXTRA = extra=; runs=$(FUZZ_SMOKE_RUNS); case $$h in $(foreach h,$(FUZZ_HARNESSES),$(h)$(FUZZ_RPAREN) extra='$(FUZZ_FLAGS_$(h))' $(if $(FUZZ_SMOKE_RUNS_$(h)),runs=$(FUZZ_SMOKE_RUNS_$(h)));;) esac
 
 TEST_TARGETS += test-fuzz-smoke
-
-# cmocka suites of the bad-input policy: each tests/robust/NAME.c is a program,
-# linked like the core suites (tests/core/common, the sanitizer library).
-ROBUST_TEST_SRCS := $(sort $(wildcard tests/robust/*.c))
-ROBUST_TEST_BINS := $(patsubst tests/robust/%.c,$(BUILD)/tests/robust/%,$(ROBUST_TEST_SRCS))
-TEST_SUITES += $(ROBUST_TEST_BINS)
-
-$(BUILD)/tests/robust/%: tests/robust/%.c $(CORE_TEST_COMMON_OBJS) $(ASAN_LIB) \
-                         tests/core/common/zt.h include/zspan/zspan.h | deps
-	@mkdir -p $(@D)
-	$(CC) $(CORE_TEST_CFLAGS) -o $@ $< $(CORE_TEST_COMMON_OBJS) $(ASAN_LIB) $(CORE_TEST_LIBS)
 
 .PHONY: fuzz fuzz-build test-fuzz-smoke fuzz-merge
 

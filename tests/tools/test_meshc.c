@@ -5,7 +5,11 @@
  *    converted at build time (mk/firmware.mk) and compiled in; the positions
  *    must equal the source ones (after the requested transform) within the
  *    quantisation error, the triangles must cover the same oriented area, and
- *    the core must accept the meshes.
+ *    the core must accept the meshes. Face normals are checked by what they
+ *    are, not by the converter's formula: unit length, perpendicular to the
+ *    stored triangle's edges, on the side the core treats as the front (it
+ *    culls the triangle from the other side), and for the quad of known.obj
+ *    equal to its plane's normal written down from the file.
  *  - Errors: every file of assimp's invalid/ folder, a missing file, an
  *    oversized model, bad options: a clear "error:" message and a non-zero
  *    exit status (never a crash).
@@ -169,6 +173,112 @@ static void known_area_vector(const double shift[3], double k, double out[3])
     }
 }
 
+/* 1 if the three corners of triangle t, mapped back to known.obj's
+ * coordinates (p / k + shift), lie on the quad's plane z = 2 - x/2 + y/4. */
+static int on_known_plane(const zs_mesh *m, unsigned t, const double shift[3], double k)
+{
+    int c;
+    for (c = 0; c < 3; c++) {
+        unsigned v = m->indices[3 * t + (unsigned)c];
+        double x = model_coord(m, v, 0) / k + shift[0], y = model_coord(m, v, 1) / k + shift[1],
+               z = model_coord(m, v, 2) / k + shift[2];
+        if (fabs(z - (2 - x / 2 + y / 4)) > 1e-3)
+            return 0;
+    }
+    return 1;
+}
+
+/* The converter's face normal of triangle t, checked by what a face normal
+ * is rather than by computing it again:
+ *  - unit length in Q1.14 within the rounding of its components;
+ *  - perpendicular to the three edges of the stored (quantised) triangle,
+ *    within what quantising the positions and the normal can tilt them;
+ *  - pointing to the side the triangle's front faces: the core itself (which
+ *    culls by the counter-clockwise winding, include/zspan/zspan.h) draws the
+ *    triangle for a camera on that side and culls it for one on the other. */
+static void check_face_normal(const zs_mesh *m, unsigned t)
+{
+    static uint8_t arena[ZS_ARENA_BYTES(32, 32, 8, 16, 8)];
+    const int16_t *nq = &m->face_normals[3 * t];
+    double n[3], p[3][3], len = 0, centre[3] = {0, 0, 0}, size = 0;
+    double q = (double)m->scale / 131072.0; /* position error, per axis */
+    int c, r, side;
+    for (r = 0; r < 3; r++) {
+        n[r] = nq[r] / 16384.0;
+        len += n[r] * n[r];
+    }
+    len = sqrt(len);
+    if (fabs(len * 16384.0 - 16384.0) > 1.0)
+        fail_msg("triangle %u: normal %d %d %d has length %.2f in Q1.14, not 16384", t, nq[0],
+                 nq[1], nq[2], len * 16384.0);
+    for (c = 0; c < 3; c++)
+        for (r = 0; r < 3; r++) {
+            p[c][r] = model_coord(m, m->indices[3 * t + (unsigned)c], r);
+            centre[r] += p[c][r] / 3;
+        }
+    for (c = 0; c < 3; c++) {
+        const double *a = p[c], *b = p[(c + 1) % 3];
+        double e[3], el = 0, d = 0, tol;
+        for (r = 0; r < 3; r++) {
+            e[r] = b[r] - a[r];
+            el += e[r] * e[r];
+        }
+        el = sqrt(el);
+        if (el > size)
+            size = el;
+        for (r = 0; r < 3; r++)
+            d += e[r] / el * n[r] / len;
+        tol = 2 * sqrt(3.0) * q / el + 1e-4;
+        if (fabs(d) > tol)
+            fail_msg("triangle %u: normal %d %d %d is not perpendicular to edge %d (cos %.2g, "
+                     "tolerance %.2g)",
+                     t, nq[0], nq[1], nq[2], c, d, tol);
+    }
+    for (side = 1; side >= -1; side -= 2) {
+        zs_renderer rd;
+        zs_config cfg = zs_config_default(32, 32, 8, 16, 8);
+        zs_camera cam;
+        zs_mesh one = *m;
+        int up = 0;
+        zs_vec3 eye, target;
+        const zs_stats *st;
+        /* up: the axis least along the normal */
+        for (r = 1; r < 3; r++)
+            if (fabs(n[r]) < fabs(n[up]))
+                up = r;
+        eye = zs_vec3_make((zs_fixed)lround((centre[0] + side * size * n[0] / len) * 65536.0),
+                           (zs_fixed)lround((centre[1] + side * size * n[1] / len) * 65536.0),
+                           (zs_fixed)lround((centre[2] + side * size * n[2] / len) * 65536.0));
+        target = zs_vec3_make((zs_fixed)lround(centre[0] * 65536.0),
+                              (zs_fixed)lround(centre[1] * 65536.0),
+                              (zs_fixed)lround(centre[2] * 65536.0));
+        one.indices = m->indices + 3 * t;
+        one.triangle_count = 1;
+        one.face_colors = NULL;
+        one.face_normals = NULL;
+        assert_int_equal(zs_init(&rd, arena, sizeof arena, &cfg), ZS_OK);
+        assert_int_equal(zs_camera_look_at(&cam, eye, target,
+                                           zs_vec3_make(up == 0 ? ZS_FX(1) : 0,
+                                                        up == 1 ? ZS_FX(1) : 0,
+                                                        up == 2 ? ZS_FX(1) : 0)),
+                         ZS_OK);
+        assert_int_equal(zs_camera_perspective(&cam, ZS_FX(90), ZS_FX(1) / 16,
+                                               (zs_fixed)lround(size * 4 * 65536.0)),
+                         ZS_OK);
+        assert_int_equal(zs_frame_begin(&rd, &cam, ZS_MODE_SPAN), ZS_OK);
+        assert_int_equal(zs_draw(&rd, &one, NULL), ZS_OK);
+        st = zs_frame_stats(&rd);
+        assert_int_equal(st->tris_submitted, 1);
+        if (side > 0 && st->tris_culled != 0)
+            fail_msg("triangle %u: culled for a camera on the side its normal %d %d %d points to",
+                     t, nq[0], nq[1], nq[2]);
+        if (side < 0 && st->tris_culled != 1)
+            fail_msg("triangle %u: not culled for a camera behind its normal %d %d %d (stored %u, "
+                     "rejected %u)",
+                     t, nq[0], nq[1], nq[2], st->tris_stored, st->tris_rejected);
+    }
+}
+
 /* ---- round trip ----------------------------------------------------------- */
 
 static void test_round_trip_known(void **state)
@@ -207,7 +317,7 @@ static void test_round_trip_options(void **state)
     const double shift[3] = {(-2.25 + 4.0) / 2, (-1.5 + 2.0) / 2, (-0.1875 + 3.0) / 2};
     double a[3], b[3];
     unsigned t;
-    int r;
+    int r, on_plane = 0;
     (void)state;
     assert_int_equal(t_known_nc.triangle_count, 4);
     assert_int_equal(t_known_nc.vertex_count, 6);
@@ -220,22 +330,24 @@ static void test_round_trip_options(void **state)
     assert_non_null(t_known_nc.face_normals);
     assert_null(t_known_nc.vertex_normals);
     for (t = 0; t < t_known_nc.triangle_count; t++) {
-        const int16_t *n = &t_known_nc.face_normals[3 * t];
-        double p[3][3], g[3], len, glen, dot = 0;
-        int c;
         assert_true(t_known_nc.face_colors[t] <= 0xFFFFFFu);
         assert_true(t_known_nc.face_colors[t] != 0);
-        len = sqrt((double)n[0] * n[0] + (double)n[1] * n[1] + (double)n[2] * n[2]);
-        assert_true(fabs(len - 16384.0) < 3.0); /* unit vector in Q1.14 */
-        for (c = 0; c < 3; c++)
+        check_face_normal(&t_known_nc, t);
+        if (on_known_plane(&t_known_nc, t, shift, 100.0)) {
+            /* the quad's plane z = 2 - x/2 + y/4 (known.obj) has the normal
+             * (2, -1, 4) / sqrt(21), up to the sign; seen from +z the quad's
+             * corners 1 2 3 4 run counter-clockwise in the xy plane (right,
+             * up, left), and that normal has +z: it is the front one */
+            const int16_t *n = &t_known_nc.face_normals[3 * t];
+            const double want[3] = {2 / sqrt(21.0), -1 / sqrt(21.0), 4 / sqrt(21.0)};
             for (r = 0; r < 3; r++)
-                p[c][r] = model_coord(&t_known_nc, t_known_nc.indices[3 * t + (unsigned)c], r);
-        cross3(p[0], p[1], p[2], g);
-        glen = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-        for (r = 0; r < 3; r++)
-            dot += g[r] / glen * n[r] / 16384.0;
-        assert_true(dot > 0.999); /* same direction as the counter-clockwise normal */
+                if (fabs(n[r] - 16384.0 * want[r]) > 1.0)
+                    fail_msg("triangle %u of the quad: normal %d %d %d, expected %.1f %.1f %.1f", t,
+                             n[0], n[1], n[2], 16384 * want[0], 16384 * want[1], 16384 * want[2]);
+            on_plane++;
+        }
     }
+    assert_int_equal(on_plane, 2); /* the quad's two triangles */
 }
 
 static void test_round_trip_sphere(void **state)

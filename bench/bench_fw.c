@@ -160,7 +160,7 @@ int main(void)
                           mode_name(mode), f, (unsigned long)((instr_milli + 500u) / 1000u),
                           (unsigned long)sum,
                           (unsigned long)(stt->tris_dropped + stt->verts_dropped +
-                                          stt->edges_dropped));
+                                          stt->records_skipped));
             }
         }
     }

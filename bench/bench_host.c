@@ -51,7 +51,7 @@ static void ppm_write(const char *dir, const char *scene, const char *mode, int 
 
 typedef struct scene_use {
     uint32_t tris, verts, edges;                    /* largest pool use */
-    uint32_t tris_dropped, verts_dropped, edges_dropped;
+    uint32_t tris_dropped, verts_dropped, records_skipped;
     int frames_dropping;
 } scene_use;
 
@@ -101,8 +101,8 @@ static int render_scene(const bench_scene *s, const zs_config *cfg, const zs_cam
                 use->edges = stt->max_active_edges;
             use->tris_dropped += stt->tris_dropped;
             use->verts_dropped += stt->verts_dropped;
-            use->edges_dropped += stt->edges_dropped;
-            if (stt->tris_dropped || stt->verts_dropped || stt->edges_dropped)
+            use->records_skipped += stt->records_skipped;
+            if (stt->tris_dropped || stt->verts_dropped || stt->records_skipped)
                 use->frames_dropping++;
             if (print)
                 printf("R host %s %s %d sum=%08lx tris=%lu verts=%lu edges=%lu "
@@ -112,7 +112,7 @@ static int render_scene(const bench_scene *s, const zs_config *cfg, const zs_cam
                        (unsigned long)stt->max_active_edges, (unsigned long)stt->tris_culled,
                        (unsigned long)stt->tris_clipped,
                        (unsigned long)(stt->tris_dropped + stt->verts_dropped +
-                                       stt->edges_dropped));
+                                       stt->records_skipped));
             if (ppm)
                 ppm_write(ppm, s->name, mode_name(mode), f, img);
         }
@@ -213,7 +213,7 @@ int main(int argc, char **argv)
                 tight[si][0] = grow(tight[si][0]);
             if (use.verts_dropped)
                 tight[si][1] = grow(tight[si][1]);
-            if (use.edges_dropped)
+            if (use.records_skipped)
                 tight[si][2] = grow(tight[si][2]);
         }
     }

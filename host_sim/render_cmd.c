@@ -567,12 +567,12 @@ int sim_cmd_render(int argc, char **argv)
                    (unsigned long)sim_fnv1a(img, stride * (size_t)o.height));
             sim_print_stats(stdout, s);
         }
-        if (s->tris_dropped || s->verts_dropped || s->edges_dropped)
+        if (s->tris_dropped || s->verts_dropped || s->records_skipped)
             fprintf(stderr,
                     "zspan-sim: warning: pools full: %lu triangles, %lu vertices dropped, %lu "
                     "triangles not activated (edge pool)\n",
                     (unsigned long)s->tris_dropped, (unsigned long)s->verts_dropped,
-                    (unsigned long)s->edges_dropped);
+                    (unsigned long)s->records_skipped);
     }
     rc = SIM_EXIT_OK;
 done:

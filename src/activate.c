@@ -176,7 +176,7 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     zs_recip area2;
     int long_left;
     if (r->n_active_free < 1 || r->n_edge_free < 2) {
-        r->stats.edges_dropped++; /* capacity policy: the triangle is skipped */
+        r->stats.records_skipped++; /* capacity policy: the triangle is skipped */
         return 0;
     }
     ai = ((uint16_t *)r->active_free)[--r->n_active_free];

@@ -326,7 +326,8 @@ typedef struct zs_stats {
     uint32_t tris_drawn;       /* records that were activated on some row */
     uint32_t verts_stored;     /* vertex pool use */
     uint32_t verts_dropped;    /* vertices that did not fit the pool */
-    uint32_t edges_dropped;    /* triangles not activated: edge pool full */
+    uint32_t records_skipped;  /* records never drawn: the active-edge pool was
+                                  full on the row they start (capacity policy) */
     uint32_t saturated;        /* values clamped beyond the documented limits
                                   (model coordinates past +-32768 units, a model-
                                   view 3x3 entry past Q16.16, eye coordinates

@@ -58,10 +58,10 @@ static void run(zs_visibility mode)
         const zs_stats *stats = zs_frame_stats(&c.r);
         ZT_CHECK(stats->records == recs.n, "scene %d: stats.records %u, hook calls %zu", n,
                  stats->records, recs.n);
-        ZT_CHECK(stats->tris_dropped == 0 && stats->edges_dropped == 0 &&
+        ZT_CHECK(stats->tris_dropped == 0 && stats->records_skipped == 0 &&
                      stats->verts_dropped == 0,
                  "scene %d: pools too small for the test (dropped %u/%u/%u)", n,
-                 stats->tris_dropped, stats->edges_dropped, stats->verts_dropped);
+                 stats->tris_dropped, stats->records_skipped, stats->verts_dropped);
         ZT_CHECK(stats->tris_submitted == stats->tris_culled + stats->tris_rejected +
                                               stats->tris_empty + stats->tris_dropped +
                                               stats->tris_stored,

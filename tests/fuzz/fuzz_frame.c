@@ -26,7 +26,7 @@
  *     identically; see the notes in README.md (Robustness));
  *   - statistics: submitted == culled + rejected + empty + dropped + stored,
  *     records == setup-hook calls, pools never above their capacities,
- *     tris_drawn + edges_dropped == records after a complete frame, the
+ *     tris_drawn + records_skipped == records after a complete frame, the
  *     geometry statistics equal in both modes;
  *   - the work bound of README.md (Robustness), per band;
  *   - coverage (ID16): a pixel shows tag t only where a record of tag t
@@ -826,20 +826,20 @@ static void run_frame(zs_renderer *r, const scene *s, zs_visibility mode, int id
     const zs_stats *f = &o->st;
     FZ_CHECK(f->rows == (uint32_t)o->nrendered, "stats.rows %u, %d rendered", f->rows,
              o->nrendered);
-    FZ_CHECK(f->tris_drawn + f->edges_dropped <= f->records,
-             "drawn %u + edge-dropped %u > records %u", f->tris_drawn, f->edges_dropped, f->records);
+    FZ_CHECK(f->tris_drawn + f->records_skipped <= f->records,
+             "drawn %u + skipped %u > records %u", f->tris_drawn, f->records_skipped, f->records);
     if (o->complete)
-        FZ_CHECK(f->tris_drawn + f->edges_dropped == f->records,
-                 "complete frame: drawn %u + edge-dropped %u != records %u", f->tris_drawn,
-                 f->edges_dropped, f->records);
+        FZ_CHECK(f->tris_drawn + f->records_skipped == f->records,
+                 "complete frame: drawn %u + skipped %u != records %u", f->tris_drawn,
+                 f->records_skipped, f->records);
     FZ_CHECK(f->max_active_edges <= s->cfg.max_active_edges &&
                  f->max_active_edges <= 2 * f->tris_drawn,
              "max_active_edges %u (pool %u, drawn %u)", f->max_active_edges,
              s->cfg.max_active_edges, f->tris_drawn);
     /* a triangle is skipped only when all max_active_edges / 2 active slots
      * are taken; those triangles' edges are then all on that row */
-    FZ_CHECK(f->edges_dropped == 0 || f->max_active_edges >= s->cfg.max_active_edges / 2u,
-             "edge pool drops (%u) with the pool never full (max %u of %u)", f->edges_dropped,
+    FZ_CHECK(f->records_skipped == 0 || f->max_active_edges >= s->cfg.max_active_edges / 2u,
+             "edge pool drops (%u) with the pool never full (max %u of %u)", f->records_skipped,
              f->max_active_edges, s->cfg.max_active_edges);
 }
 
@@ -1053,7 +1053,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 #define SAME(f) FZ_CHECK(a->f == b->f, "span " #f " %u != zline %u", a->f, b->f)
         SAME(tris_submitted); SAME(tris_culled); SAME(tris_rejected); SAME(tris_clipped);
         SAME(tris_empty); SAME(tris_dropped); SAME(tris_stored); SAME(records);
-        SAME(tris_drawn); SAME(verts_stored); SAME(verts_dropped); SAME(edges_dropped);
+        SAME(tris_drawn); SAME(verts_stored); SAME(verts_dropped); SAME(records_skipped);
         SAME(saturated); SAME(rows); SAME(max_active_edges);
 #undef SAME
         FZ_CHECK(recs_prefix(&g_zline.recs, &g_span.recs) && g_span.recs.n == g_zline.recs.n,
@@ -1108,7 +1108,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             uint16_t t = id_at(id, W, x, y);
             FZ_CHECK(!t || g_cov_ok[y][x], "pixel (%d,%d) shows tag %u, which no record of that "
                      "tag covers", x, y, t);
-            FZ_CHECK(t || !g_cov_any[y][x] || id->st.edges_dropped > 0,
+            FZ_CHECK(t || !g_cov_any[y][x] || id->st.records_skipped > 0,
                      "pixel (%d,%d) covered by a record but shows no triangle", x, y);
         }
     }

@@ -166,7 +166,7 @@ void zt_guarded_frame(zt_ctx *c, const zs_camera *cam, zs_visibility mode,
     zt_tot.culled += s->tris_culled;
     zt_tot.dropped += s->tris_dropped;
     zt_tot.vdropped += s->verts_dropped;
-    zt_tot.edropped += s->edges_dropped;
+    zt_tot.edropped += s->records_skipped;
     zt_tot.saturated += s->saturated;
 }
 

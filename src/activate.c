@@ -91,12 +91,16 @@ static void depth_plane(zs_active *a, const zs_vert *s[3], const zs_recip *area2
     int64_t z0, w16, h16;
     a->zdx = zs_recip_muldiv(area2, dz1 * dy2 - dz2 * dy1, 14, ZS_DEPTH_GRADIENT_LIMIT);
     a->zdy = zs_recip_muldiv(area2, dz2 * dx1 - dz1 * dx2, 14, ZS_DEPTH_GRADIENT_LIMIT);
-    /* extents in 1/16 px (< 2^17), plus a pixel for the centres around */
-    w16 = max3_64(0, dx1, dx2) - min3_64(0, dx1, dx2) + 16;
-    h16 = dy2 + 16;
-    /* gradients <= 2^48: at >> 4 each product stays below 2^62 */
-    if ((abs64(a->zdx) >> 4) * w16 + (abs64(a->zdy) >> 4) * h16 >= ZS_STEEP_SPREAD)
-        a->flags |= ZS_ACT_STEEP;
+    /* Below 2^32 each, the spread is under 2 * 2^28 * 2^17 = 2^46: the
+     * common case needs no products. */
+    if ((uint64_t)(abs64(a->zdx) | abs64(a->zdy)) >= ((uint64_t)1 << 32)) {
+        /* extents in 1/16 px (<= 2^17), plus a pixel for the centres around */
+        w16 = max3_64(0, dx1, dx2) - min3_64(0, dx1, dx2) + 16;
+        h16 = dy2 + 16;
+        /* gradients <= 2^48: at >> 4 each product stays below 2^62 */
+        if ((abs64(a->zdx) >> 4) * w16 + (abs64(a->zdy) >> 4) * h16 >= ZS_STEEP_SPREAD)
+            a->flags |= ZS_ACT_STEEP;
+    }
     /* depth at the origin pixel centre, from vertex 0 (less than a pixel away) */
     z0 = (int64_t)s[0]->z * 1024 +
          zs_asr64(a->zdx * (16 * (int64_t)ox + 8 - s[0]->x) +
@@ -110,7 +114,7 @@ static void depth_plane(zs_active *a, const zs_vert *s[3], const zs_recip *area2
  * equal edges and equal planes however their vertices were rotated. */
 static void sort_canonical(const zs_renderer *r, const zs_tri *t, const zs_vert *v[3])
 {
-    const zs_vert *pool = (const zs_vert *)r->verts, *tmp;
+    const zs_vert *pool = r->priv.verts, *tmp;
     v[0] = &pool[t->v[0]];
     v[1] = &pool[t->v[1]];
     v[2] = &pool[t->v[2]];
@@ -125,7 +129,7 @@ void zs_anchor_depth(const zs_renderer *r, zs_active *a, int32_t xa, int32_t y)
 {
     const zs_vert *s[3];
     int64_t px = 16 * (int64_t)xa + 8, py = 16 * (int64_t)y + 8, d, l0, l1, l2, z;
-    sort_canonical(r, &((const zs_tri *)r->tris)[a->tri], s);
+    sort_canonical(r, &r->priv.tris[a->tri], s);
     /* twice the area, and the barycentric numerators of s[1] and s[2] at
      * the centre (edge functions; all below 2^35) */
     d = ((int64_t)s[1]->x - s[0]->x) * ((int64_t)s[2]->y - s[0]->y) -
@@ -153,34 +157,34 @@ void zs_anchor_depth(const zs_renderer *r, zs_active *a, int32_t xa, int32_t y)
 static uint16_t new_edge(zs_renderer *r, uint16_t ai, int left_side, const zs_vert *a,
                          const zs_vert *b, int32_t y)
 {
-    uint16_t ei = ((uint16_t *)r->edge_free)[--r->n_edge_free];
-    zs_edge *e = &((zs_edge *)r->edges)[ei];
+    uint16_t ei = r->priv.edge_free[--r->priv.n_edge_free];
+    zs_edge *e = &r->priv.edges[ei];
     edge_init(e, a, b, y);
     e->lead = left_side ? ai : (uint16_t)ZS_NONE;
     e->trail = left_side ? (uint16_t)ZS_NONE : ai;
     e->pad = 0;
-    ((uint16_t *)r->ael)[r->n_ael++] = ei;
+    r->priv.ael[r->priv.n_ael++] = ei;
     if (!left_side)
-        ((zs_active *)r->active)[ai].right = ei;
+        r->priv.active[ai].right = ei;
     return ei;
 }
 
 int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
 {
-    zs_tri *t = &((zs_tri *)r->tris)[ti];
-    const zs_vert *pool = (const zs_vert *)r->verts;
+    zs_tri *t = &r->priv.tris[ti];
+    const zs_vert *pool = r->priv.verts;
     const zs_vert *v[3], *s[3];
     uint16_t ai, long_edge, short_edge;
     zs_active *a;
     int64_t cross;
     zs_recip area2;
     int long_left;
-    if (r->n_active_free < 1 || r->n_edge_free < 2) {
+    if (r->priv.n_active_free < 1 || r->priv.n_edge_free < 2) {
         r->stats.records_skipped++; /* capacity policy: the triangle is skipped */
         return 0;
     }
-    ai = ((uint16_t *)r->active_free)[--r->n_active_free];
-    a = &((zs_active *)r->active)[ai];
+    ai = r->priv.active_free[--r->priv.n_active_free];
+    a = &r->priv.active[ai];
     sort_canonical(r, t, s);
     /* twice the area in canonical order; its sign says which side of the
      * long edge top -> bottom the middle vertex lies on */
@@ -200,18 +204,20 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     zs_recip_init(&area2, cross);
     /* the depth plane from the canonical order: equal triangles, equal planes */
     depth_plane(a, s, &area2, zs_asr32(s[0]->x, 4), zs_asr32(s[0]->y, 4), y);
-    if (a->flags & ZS_ACT_STEEP)
+    if (a->flags & ZS_ACT_STEEP) {
+        r->priv.steep = 1;
         zs_anchor_depth(r, a,
-                        zs_clampi(((zs_edge *)r->edges)[long_left ? long_edge : short_edge].x,
+                        zs_clampi(r->priv.edges[long_left ? long_edge : short_edge].x,
                                   0, r->cfg.width),
                         y);
+    }
     /* colours in submission order (per-vertex shades follow t->v); the
      * record's area is negative in that order (a front face) */
     v[0] = &pool[t->v[0]];
     v[1] = &pool[t->v[1]];
     v[2] = &pool[t->v[2]];
     area2.neg = 1;
-    zs_shade_setup(r, a, r->acolor ? &((zs_active_color *)r->acolor)[ai] : 0, t, v,
+    zs_shade_setup(r, a, r->priv.acolor ? &r->priv.acolor[ai] : 0, t, v,
                    zs_asr32(v[0]->x, 4), zs_asr32(v[0]->y, 4), &area2, y);
     r->stats.tris_drawn++;
     return 1;
@@ -219,12 +225,12 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
 
 void zs_continue_edge(zs_renderer *r, uint16_t ai, int32_t y)
 {
-    zs_active *a = &((zs_active *)r->active)[ai];
+    zs_active *a = &r->priv.active[ai];
     const zs_vert *s[3];
     int left_side = !(a->flags & ZS_ACT_LONG_LEFT);
     uint16_t ei;
-    sort_canonical(r, &((const zs_tri *)r->tris)[a->tri], s);
+    sort_canonical(r, &r->priv.tris[a->tri], s);
     ei = new_edge(r, ai, left_side, s[1], s[2], y);
     if (left_side && (a->flags & ZS_ACT_STEEP))
-        zs_anchor_depth(r, a, zs_clampi(((zs_edge *)r->edges)[ei].x, 0, r->cfg.width), y);
+        zs_anchor_depth(r, a, zs_clampi(r->priv.edges[ei].x, 0, r->cfg.width), y);
 }

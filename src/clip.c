@@ -5,7 +5,7 @@
 unsigned zs_outcode(const zs_renderer *r, int64_t xc, int64_t yc, int64_t w)
 {
     unsigned oc = 0;
-    int64_t gw = r->guard * w;
+    int64_t gw = r->priv.guard * w;
     if (w < r->cam.near_z)
         oc |= ZS_OUT_NEAR;
     if (w > r->cam.far_z)
@@ -26,7 +26,7 @@ unsigned zs_outcode(const zs_renderer *r, int64_t xc, int64_t yc, int64_t w)
 /* Signed distance to plane p (inside when >= 0). */
 static int64_t plane_dist(const zs_renderer *r, int p, const zs_svert *v)
 {
-    int64_t gw = r->guard * v->w;
+    int64_t gw = r->priv.guard * v->w;
     switch (p) {
     case 0: return v->w - r->cam.near_z;
     case 1: return r->cam.far_z - v->w;
@@ -78,10 +78,10 @@ static zs_svert intersect(const zs_renderer *r, int p, const zs_svert *in, const
     switch (p) {
     case 0: v.w = r->cam.near_z; break;
     case 1: v.w = r->cam.far_z; break;
-    case 2: v.xc = -r->guard * v.w; break;
-    case 3: v.xc = r->guard * v.w; break;
-    case 4: v.yc = -r->guard * v.w; break;
-    default: v.yc = r->guard * v.w; break;
+    case 2: v.xc = -r->priv.guard * v.w; break;
+    case 3: v.xc = r->priv.guard * v.w; break;
+    case 4: v.yc = -r->priv.guard * v.w; break;
+    default: v.yc = r->priv.guard * v.w; break;
     }
     return v;
 }

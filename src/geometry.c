@@ -38,7 +38,7 @@ static void prepare_clip_rows(draw_ctx *c)
 {
     const zs_renderer *r = c->r;
     const int64_t sign[3] = {1, 1, -1}; /* w = -z_eye */
-    const int32_t proj[3] = {r->proj_sx, r->proj_sy, 65536};
+    const int32_t proj[3] = {r->priv.proj_sx, r->priv.proj_sy, 65536};
     int k, j;
     c->fast = abs64(c->mesh->scale) < ((int64_t)1 << 30);
     for (k = 0; k < 3 && c->fast; k++) {
@@ -116,8 +116,8 @@ static void to_clip(const draw_ctx *c, uint32_t i, int64_t *xc, int64_t *yc, int
                 e[k] = e[k] > 0 ? EYE_LIMIT : -EYE_LIMIT;
             }
         }
-        *xc = zs_mul_q16_wide(e[0], r->proj_sx);
-        *yc = zs_mul_q16_wide(e[1], r->proj_sy);
+        *xc = zs_mul_q16_wide(e[0], r->priv.proj_sx);
+        *yc = zs_mul_q16_wide(e[1], r->priv.proj_sy);
         *w = -e[2];
     }
 }
@@ -143,9 +143,9 @@ static zs_fixed light_intensity(const draw_ctx *c, const int64_t n_model[3])
         for (k = 0; k < r->shade.light_count; k++) {
             int32_t l[3];
             int64_t d;
-            l[0] = r->light_dir[k].x;
-            l[1] = r->light_dir[k].y;
-            l[2] = r->light_dir[k].z;
+            l[0] = r->priv.light_dir[k].x;
+            l[1] = r->priv.light_dir[k].y;
+            l[2] = r->priv.light_dir[k].z;
             d = zs_dot3_q16(unit, l);
             if (d > 0)
                 total += zs_asr64(d * r->shade.lights[k].intensity, 16);
@@ -278,7 +278,7 @@ static int clip_and_setup(draw_ctx *c, uint16_t base, const uint16_t idx[3], uin
                           uint16_t tag)
 {
     zs_renderer *r = c->r;
-    zs_vert *pool = (zs_vert *)r->verts;
+    zs_vert *pool = r->priv.verts;
     zs_svert in[3], out[9];
     unsigned and_codes = 0xFFu;
     int n, k, outcome = ZS_SETUP_REJECTED;
@@ -286,7 +286,7 @@ static int clip_and_setup(draw_ctx *c, uint16_t base, const uint16_t idx[3], uin
     for (k = 0; k < 3; k++) {
         const zs_vert *pv = &pool[base + idx[k]];
         to_clip(c, idx[k], &in[k].xc, &in[k].yc, &in[k].w);
-        in[k].shade = r->vshade ? ((const uint32_t *)r->vshade)[base + idx[k]] : 0;
+        in[k].shade = r->priv.vshade ? r->priv.vshade[base + idx[k]] : 0;
         in[k].pool = (pv->z & ZS_VERT_UNPROJECTED) ? (uint16_t)ZS_NONE : (uint16_t)(base + idx[k]);
         and_codes &= zs_outcode(r, in[k].xc, in[k].yc, in[k].w);
     }
@@ -336,7 +336,7 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     uint16_t base;
     if (!r || !m)
         return ZS_ERR_NULL;
-    if (r->state != ZS_STATE_OPEN)
+    if (r->priv.state != ZS_STATE_OPEN)
         return ZS_ERR_STATE;
     if (!m->positions || !m->indices || m->scale == 0 || m->vertex_count == 0)
         return ZS_ERR_MESH;
@@ -356,8 +356,8 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
 
     /* vertices: transform all that fit the pool (capacity policy: the last
      * vertices are dropped, and so are the triangles that use them) */
-    pool = (zs_vert *)r->verts;
-    base = r->n_verts;
+    pool = r->priv.verts;
+    base = r->priv.n_verts;
     room = (uint32_t)r->cfg.max_vertices - base;
     vfit = m->vertex_count < room ? m->vertex_count : room;
     r->stats.verts_dropped += m->vertex_count - vfit;
@@ -365,19 +365,19 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
         zs_vert *v = &pool[base + i];
         int64_t xc, yc, w;
         to_clip(&c, i, &xc, &yc, &w);
-        if (r->vshade)
-            ((uint32_t *)r->vshade)[base + i] = vertex_shade(&c, i, w);
+        if (r->priv.vshade)
+            r->priv.vshade[base + i] = vertex_shade(&c, i, w);
         if (zs_outcode(r, xc, yc, w) & (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_GUARD))
             v->z = ZS_VERT_UNPROJECTED;
         else /* near <= w <= far: 32 bits */
             zs_project(r, xc, yc, (int32_t)w, &v->x, &v->y, &v->z);
     }
-    r->n_verts = (uint16_t)(base + vfit);
-    r->stats.verts_stored = r->n_verts;
+    r->priv.n_verts = (uint16_t)(base + vfit);
+    r->stats.verts_stored = r->priv.n_verts;
 
     for (t = 0; t < m->triangle_count; t++) {
         uint16_t idx[3];
-        uint16_t tag = (uint16_t)(r->tag_counter++ % 65535u + 1u);
+        uint16_t tag = (uint16_t)(r->priv.tag_counter++ % 65535u + 1u);
         const zs_vert *v0, *v1, *v2;
         int outcome;
         r->stats.tris_submitted++;

@@ -9,8 +9,8 @@
  * up, the triangles submitted last are the ones dropped. */
 static void reverse_buckets(zs_renderer *r)
 {
-    uint16_t *bucket = (uint16_t *)r->buckets;
-    zs_tri *tris = (zs_tri *)r->tris;
+    uint16_t *bucket = r->priv.buckets;
+    zs_tri *tris = r->priv.tris;
     int y;
     for (y = 0; y < (int)r->cfg.height; y++) {
         uint16_t prev = ZS_NONE, t = bucket[y];
@@ -26,8 +26,8 @@ static void reverse_buckets(zs_renderer *r)
 
 void zs_raster_begin(zs_renderer *r)
 {
-    uint16_t *efree = (uint16_t *)r->edge_free;
-    uint16_t *afree = (uint16_t *)r->active_free;
+    uint16_t *efree = r->priv.edge_free;
+    uint16_t *afree = r->priv.active_free;
     /* two edge sides per triangle: e / 2 triangles can never need more than
      * e edges, even while shared edges split at their continuations */
     uint16_t e = r->cfg.max_active_edges, a = (uint16_t)(e / 2u), i;
@@ -36,10 +36,11 @@ void zs_raster_begin(zs_renderer *r)
         efree[i] = (uint16_t)(e - 1u - i);
     for (i = 0; i < a; i++)
         afree[i] = (uint16_t)(a - 1u - i);
-    r->n_edge_free = e;
-    r->n_active_free = a;
-    r->n_ael = 0;
-    r->n_sorted = 0;
+    r->priv.n_edge_free = e;
+    r->priv.n_active_free = a;
+    r->priv.n_ael = 0;
+    r->priv.n_sorted = 0;
+    r->priv.steep = 0;
     reverse_buckets(r);
 }
 
@@ -49,7 +50,7 @@ void zs_raster_begin(zs_renderer *r)
  * than twice the active triangles. */
 static int fold_edge(zs_renderer *r, zs_edge *keep, uint16_t keep_i, zs_edge *dup)
 {
-    zs_active *act = (zs_active *)r->active;
+    zs_active *act = r->priv.active;
     if (keep->err != dup->err || keep->step != dup->step || keep->rstep != dup->rstep ||
         keep->den != dup->den || keep->y_end != dup->y_end)
         return 0;
@@ -71,8 +72,8 @@ static int fold_edge(zs_renderer *r, zs_edge *keep, uint16_t keep_i, zs_edge *du
  * bottom-up merge sort for more (a row can start hundreds of triangles). */
 static void sort_batch(zs_renderer *r, uint16_t *a, int n)
 {
-    const zs_edge *edges = (const zs_edge *)r->edges;
-    uint32_t *key = (uint32_t *)r->zline_depth, *tmp, *src, *dst;
+    const zs_edge *edges = r->priv.edges;
+    uint32_t *key = r->priv.sort_keys, *tmp, *src, *dst;
     int width, i, j;
     if (n < 2)
         return;
@@ -128,16 +129,16 @@ static void sort_batch(zs_renderer *r, uint16_t *a, int n)
  * unsorted tail (those edges plus continuations made by the last step). */
 static void add_new_edges(zs_renderer *r, int32_t y)
 {
-    uint16_t *ael = (uint16_t *)r->ael;
-    zs_edge *edges = (zs_edge *)r->edges;
-    uint16_t *bucket = (uint16_t *)r->buckets;
-    const zs_tri *tris = (const zs_tri *)r->tris;
-    uint16_t *efree = (uint16_t *)r->edge_free;
-    int sorted = r->n_sorted, n, i, j, k, w;
+    uint16_t *ael = r->priv.ael;
+    zs_edge *edges = r->priv.edges;
+    uint16_t *bucket = r->priv.buckets;
+    const zs_tri *tris = r->priv.tris;
+    uint16_t *efree = r->priv.edge_free;
+    int sorted = r->priv.n_sorted, n, i, j, k, w;
     uint16_t ti;
     for (ti = bucket[y]; ti != ZS_NONE; ti = tris[ti].next)
         zs_activate(r, ti, y);
-    n = r->n_ael;
+    n = r->priv.n_ael;
     if (n == sorted)
         return;
     sort_batch(r, ael + sorted, n - sorted);
@@ -148,7 +149,7 @@ static void add_new_edges(zs_renderer *r, int32_t y)
         int folded = 0;
         for (j = w - 1; j >= sorted && edges[ael[j]].x == e->x; j--) {
             if (fold_edge(r, &edges[ael[j]], ael[j], e)) {
-                efree[r->n_edge_free++] = ael[i];
+                efree[r->priv.n_edge_free++] = ael[i];
                 folded = 1;
                 break;
             }
@@ -160,7 +161,7 @@ static void add_new_edges(zs_renderer *r, int32_t y)
     /* merge from the back: both runs are sorted, the list has room; the free
      * stack's unused top (as many slots as edges in use) holds the batch */
     if (sorted > 0) {
-        uint16_t *batch = efree + r->n_edge_free;
+        uint16_t *batch = efree + r->priv.n_edge_free;
         int nb = n - sorted;
         for (i = 0; i < nb; i++)
             batch[i] = ael[sorted + i];
@@ -174,25 +175,37 @@ static void add_new_edges(zs_renderer *r, int32_t y)
                 ael[k--] = batch[j--];
         }
     }
-    r->n_ael = (uint16_t)n;
-    r->n_sorted = (uint16_t)n;
+    r->priv.n_ael = (uint16_t)n;
+    r->priv.n_sorted = (uint16_t)n;
 }
 
-/* Planes of active triangle ai to the next row; xa is its left edge's
- * column there (a steep plane is anchored at it), or -1 when the left edge
- * is about to be replaced (zs_continue_edge anchors then). */
-static inline void step_planes(zs_renderer *r, uint16_t ai, int32_t xa, int32_t next)
+/* Planes of active triangle ai to the next row (a steep plane is set again
+ * by anchor_steep or zs_continue_edge). */
+static inline void step_planes(zs_renderer *r, uint16_t ai)
 {
-    zs_active *a = &((zs_active *)r->active)[ai];
-    if (!(a->flags & ZS_ACT_STEEP))
-        a->zrow += a->zdy;
-    else if (xa >= 0)
-        zs_anchor_depth(r, a, zs_clampi(xa, 0, r->cfg.width), next);
+    zs_active *a = &r->priv.active[ai];
+    a->zrow += a->zdy;
     if (a->flags & ZS_ACT_GOURAUD) {
-        zs_active_color *c = &((zs_active_color *)r->acolor)[ai];
+        zs_active_color *c = &r->priv.acolor[ai];
         c->crow[0] += (uint32_t)c->cdy[0];
         c->crow[1] += (uint32_t)c->cdy[1];
         c->crow[2] += (uint32_t)c->cdy[2];
+    }
+}
+
+/* Row `next` of the steep planes: each anchored at its left edge's column.
+ * A pass of its own, run only in frames with needles, so the edge stepping
+ * loop stays as lean as without them. */
+static void anchor_steep(zs_renderer *r, int32_t next)
+{
+    const uint16_t *ael = r->priv.ael;
+    const zs_edge *edges = r->priv.edges;
+    zs_active *act = r->priv.active;
+    int i;
+    for (i = 0; i < r->priv.n_ael; i++) {
+        const zs_edge *e = &edges[ael[i]];
+        if (e->lead != ZS_NONE && (act[e->lead].flags & ZS_ACT_STEEP))
+            zs_anchor_depth(r, &act[e->lead], zs_clampi(e->x, 0, r->cfg.width), next);
     }
 }
 
@@ -200,14 +213,14 @@ static inline void step_planes(zs_renderer *r, uint16_t ai, int32_t xa, int32_t 
  * with its left edge) or goes on with its lower short edge (queued in cont). */
 static void retire_edge(zs_renderer *r, zs_edge *e, int32_t next, uint16_t *cont, int *n_cont)
 {
-    zs_active *act = (zs_active *)r->active;
-    uint16_t *afree = (uint16_t *)r->active_free;
+    zs_active *act = r->priv.active;
+    uint16_t *afree = r->priv.active_free;
     if (e->lead != ZS_NONE) {
         zs_active *a = &act[e->lead];
         if (next >= a->y_end) {
-            afree[r->n_active_free++] = e->lead;
+            afree[r->priv.n_active_free++] = e->lead;
         } else {
-            step_planes(r, e->lead, -1, next);
+            step_planes(r, e->lead);
             cont[(*n_cont)++] = e->lead;
         }
     }
@@ -220,20 +233,20 @@ static void retire_edge(zs_renderer *r, zs_edge *e, int32_t next, uint16_t *cont
  * planes of each triangle step with its left edge. */
 static void step_edges(zs_renderer *r, int32_t y)
 {
-    uint16_t *ael = (uint16_t *)r->ael;
-    zs_edge *edges = (zs_edge *)r->edges;
-    uint16_t *efree = (uint16_t *)r->edge_free;
+    uint16_t *ael = r->priv.ael;
+    zs_edge *edges = r->priv.edges;
+    uint16_t *efree = r->priv.edge_free;
     /* continuations wait in the in-polygon set's array (unused between
      * rows): at most one per active triangle */
-    uint16_t *cont = (uint16_t *)r->in_set;
-    int i, n = r->n_ael, kept = 0, n_cont = 0;
+    uint16_t *cont = r->priv.in_set;
+    int i, n = r->priv.n_ael, kept = 0, n_cont = 0;
     int32_t next = y + 1, prev_x = INT32_MIN;
     for (i = 0; i < n; i++) {
         uint16_t ei = ael[i];
         zs_edge *e = &edges[ei];
         if (next >= e->y_end) {
             retire_edge(r, e, next, cont, &n_cont);
-            efree[r->n_edge_free++] = ei;
+            efree[r->priv.n_edge_free++] = ei;
             continue;
         }
         e->x += e->step;
@@ -243,7 +256,7 @@ static void step_edges(zs_renderer *r, int32_t y)
             e->x++;
         }
         if (e->lead != ZS_NONE)
-            step_planes(r, e->lead, zs_clampi(e->x, 0, r->cfg.width), next);
+            step_planes(r, e->lead);
         if (e->x >= prev_x) {
             prev_x = e->x;
             ael[kept++] = ei;
@@ -255,8 +268,10 @@ static void step_edges(zs_renderer *r, int32_t y)
             kept++;
         }
     }
-    r->n_ael = (uint16_t)kept;
-    r->n_sorted = (uint16_t)kept;
+    r->priv.n_ael = (uint16_t)kept;
+    r->priv.n_sorted = (uint16_t)kept;
+    if (r->priv.steep)
+        anchor_steep(r, next);
     /* lower short edges join the next row's batch (edges were freed first,
      * so the pool has room) */
     for (i = 0; i < n_cont; i++)
@@ -269,11 +284,11 @@ void zs_raster_row(zs_renderer *r, int y, uint8_t *row)
     add_new_edges(r, y);
     /* capacity demand in edge sides, two per active triangle (a shared edge
      * record serves two sides, but each triangle needs its pair) */
-    sides = 2u * (uint32_t)(r->cfg.max_active_edges / 2u - r->n_active_free);
+    sides = 2u * (uint32_t)(r->cfg.max_active_edges / 2u - r->priv.n_active_free);
     if (sides > r->stats.max_active_edges)
         r->stats.max_active_edges = sides;
     if (row) {
-        if (r->mode == ZS_MODE_ZLINE)
+        if (r->priv.mode == ZS_MODE_ZLINE)
             zs_zline_row(r, y, row);
         else
             zs_span_row(r, y, row);

@@ -64,50 +64,35 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
     r->cfg = *cfg;
     e = cfg->max_active_edges;
     a = e / 2u;
-    cur = (uint8_t *)arena;
+    cur = arena;
     cur += (ZS_ARENA_ALIGN - ((uintptr_t)cur & (ZS_ARENA_ALIGN - 1u))) & (ZS_ARENA_ALIGN - 1u);
-    r->verts = carve(&cur, (size_t)cfg->max_vertices * sizeof(zs_vert));
-    r->vshade = flat ? 0 : carve(&cur, (size_t)cfg->max_vertices * 4u);
-    r->tris = carve(&cur, (size_t)cfg->max_triangles * sizeof(zs_tri));
-    r->buckets = carve(&cur, (size_t)cfg->height * 2u);
-    r->edges = carve(&cur, e * sizeof(zs_edge));
-    r->ael = carve(&cur, e * 2u);
-    r->edge_free = carve(&cur, e * 2u);
-    r->active = carve(&cur, a * sizeof(zs_active));
-    r->acolor = flat ? 0 : carve(&cur, a * sizeof(zs_active_color));
-    r->in_set = carve(&cur, a * 2u);
-    r->active_free = carve(&cur, a * 2u);
+    r->priv.verts = carve(&cur, (size_t)cfg->max_vertices * sizeof(zs_vert));
+    r->priv.vshade = flat ? 0 : carve(&cur, (size_t)cfg->max_vertices * 4u);
+    r->priv.tris = carve(&cur, (size_t)cfg->max_triangles * sizeof(zs_tri));
+    r->priv.buckets = carve(&cur, (size_t)cfg->height * 2u);
+    r->priv.edges = carve(&cur, e * sizeof(zs_edge));
+    r->priv.ael = carve(&cur, e * 2u);
+    r->priv.edge_free = carve(&cur, e * 2u);
+    r->priv.active = carve(&cur, a * sizeof(zs_active));
+    r->priv.acolor = flat ? 0 : carve(&cur, a * sizeof(zs_active_color));
+    r->priv.in_set = carve(&cur, a * 2u);
+    r->priv.active_free = carve(&cur, a * 2u);
     if (!(cfg->flags & ZS_CFG_NO_ZLINE)) {
-        r->zline_depth = carve(&cur, (size_t)cfg->width * 8u);
-        r->zline_owner = carve(&cur, (size_t)cfg->width * 2u);
+        /* span mode sorts edges in the idle z-buffer line: 2 keys a pixel */
+        void *line = carve(&cur, (size_t)cfg->width * 8u);
+        r->priv.zline_depth = line;
+        r->priv.sort_keys = line;
+        r->priv.zline_owner = carve(&cur, (size_t)cfg->width * 2u);
     }
     /* the widest guard band whose projected 28.4 coordinates fit int16 */
     dim = cfg->width > cfg->height ? cfg->width : cfg->height;
-    r->guard = (int32_t)(32767u / (8u * dim)) - 1;
-    if (r->guard > ZS_GUARD_MAX)
-        r->guard = ZS_GUARD_MAX;
+    r->priv.guard = (int32_t)(32767u / (8u * dim)) - 1;
+    if (r->priv.guard > ZS_GUARD_MAX)
+        r->priv.guard = ZS_GUARD_MAX;
     r->shade = zs_shade_default();
-    r->bpp = (uint8_t)zs_format_bytes(r->shade.format);
-    r->state = ZS_STATE_READY;
+    r->priv.bpp = (uint8_t)zs_format_bytes(r->shade.format);
+    r->priv.state = ZS_STATE_READY;
     return ZS_OK;
-}
-
-unsigned zs_format_bytes(zs_format fmt)
-{
-    switch (fmt) {
-    case ZS_FMT_RGB565_BE:
-    case ZS_FMT_RGB565:
-    case ZS_FMT_ID16:
-        return 2;
-    case ZS_FMT_RGB666:
-    case ZS_FMT_RGB888:
-        return 3;
-    case ZS_FMT_GRAY8:
-        return 1;
-    case ZS_FMT_COUNT:
-        break;
-    }
-    return 0;
 }
 
 zs_shade_params zs_shade_default(void)
@@ -127,7 +112,7 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
     int64_t cot;
     if (!r || !cam)
         return ZS_ERR_NULL;
-    if (r->state == ZS_STATE_NONE)
+    if (r->priv.state == ZS_STATE_NONE)
         return ZS_ERR_STATE;
     if (mode != ZS_MODE_SPAN && mode != ZS_MODE_ZLINE)
         return ZS_ERR_MODE;
@@ -147,22 +132,22 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
     if (cot > INT32_MAX / 2 || (cot * r->cfg.height) / r->cfg.width > INT32_MAX / 2)
         return ZS_ERR_FOV;
     r->cam = *cam;
-    r->mode = (uint8_t)mode;
-    r->proj_sy = (zs_fixed)cot;
-    r->proj_sx = (zs_fixed)((cot * r->cfg.height) / r->cfg.width);
+    r->priv.mode = (uint8_t)mode;
+    r->priv.proj_sy = (zs_fixed)cot;
+    r->priv.proj_sx = (zs_fixed)((cot * r->cfg.height) / r->cfg.width);
     {
         int64_t f = cam->far_z, n = cam->near_z;
-        r->depth_scale = f < 8 * (f - n) ? (f * ((int64_t)1 << 30)) / (f - n) : 0;
+        r->priv.depth_scale = f < 8 * (f - n) ? (f * ((int64_t)1 << 30)) / (f - n) : 0;
     }
     memset(&r->stats, 0, sizeof r->stats);
     r->shade = zs_shade_default();
-    r->bpp = (uint8_t)zs_format_bytes(r->shade.format);
-    r->n_verts = 0;
-    r->n_tris = 0;
-    r->tag_counter = 0;
-    r->next_row = 0;
-    memset(r->buckets, 0xFF, (size_t)r->cfg.height * 2u);
-    r->state = ZS_STATE_OPEN;
+    r->priv.bpp = (uint8_t)zs_format_bytes(r->shade.format);
+    r->priv.n_verts = 0;
+    r->priv.n_tris = 0;
+    r->priv.tag_counter = 0;
+    r->priv.next_row = 0;
+    memset(r->priv.buckets, 0xFF, (size_t)r->cfg.height * 2u);
+    r->priv.state = ZS_STATE_OPEN;
     return ZS_OK;
 }
 
@@ -172,7 +157,7 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
     int i;
     if (!r || !p)
         return ZS_ERR_NULL;
-    if (r->state != ZS_STATE_OPEN || r->tag_counter != 0)
+    if (r->priv.state != ZS_STATE_OPEN || r->priv.tag_counter != 0)
         return ZS_ERR_STATE;
     if (p->shading != ZS_SHADE_FLAT && p->shading != ZS_SHADE_GOURAUD)
         return ZS_ERR_MODE;
@@ -198,9 +183,9 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
     }
     /* a refused call changes nothing: commit only now */
     for (i = 0; i < p->light_count; i++)
-        r->light_dir[i] = dirs[i];
+        r->priv.light_dir[i] = dirs[i];
     r->shade = *p;
-    r->bpp = (uint8_t)zs_format_bytes(p->format);
+    r->priv.bpp = (uint8_t)zs_format_bytes(p->format);
     return ZS_OK;
 }
 
@@ -209,26 +194,26 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
     int y;
     if (!r || !buf)
         return ZS_ERR_NULL;
-    if (r->state != ZS_STATE_OPEN && r->state != ZS_STATE_RENDERING)
+    if (r->priv.state != ZS_STATE_OPEN && r->priv.state != ZS_STATE_RENDERING)
         return ZS_ERR_STATE;
-    if (rows < 1 || y0 < r->next_row || y0 >= (int)r->cfg.height ||
+    if (rows < 1 || y0 < r->priv.next_row || y0 >= (int)r->cfg.height ||
         rows > (int)r->cfg.height - y0)
         return ZS_ERR_ROW;
-    if (stride < (size_t)r->cfg.width * r->bpp ||
-        stride > (SIZE_MAX - (size_t)r->cfg.width * r->bpp) / (size_t)rows)
+    if (stride < (size_t)r->cfg.width * r->priv.bpp ||
+        stride > (SIZE_MAX - (size_t)r->cfg.width * r->priv.bpp) / (size_t)rows)
         return ZS_ERR_BUFFER; /* too small, or rows * stride past the address space */
-    if (r->state == ZS_STATE_OPEN) {
+    if (r->priv.state == ZS_STATE_OPEN) {
         zs_raster_begin(r);
-        r->state = ZS_STATE_RENDERING;
+        r->priv.state = ZS_STATE_RENDERING;
     }
-    for (y = r->next_row; y < y0; y++)
+    for (y = r->priv.next_row; y < y0; y++)
         zs_raster_row(r, y, 0);
     for (y = y0; y < y0 + rows; y++)
         zs_raster_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
-    r->next_row = y0 + rows;
+    r->priv.next_row = y0 + rows;
     r->stats.rows += (uint32_t)rows;
-    if (r->next_row >= (int)r->cfg.height)
-        r->state = ZS_STATE_DONE;
+    if (r->priv.next_row >= (int)r->cfg.height)
+        r->priv.state = ZS_STATE_DONE;
     return ZS_OK;
 }
 
@@ -239,10 +224,10 @@ zs_status zs_render_frame(zs_renderer *r, void *buf, size_t stride, int band_row
         return ZS_ERR_NULL;
     if (band_rows < 1)
         return ZS_ERR_ROW;
-    if (r->state != ZS_STATE_OPEN && r->state != ZS_STATE_RENDERING)
+    if (r->priv.state != ZS_STATE_OPEN && r->priv.state != ZS_STATE_RENDERING)
         return ZS_ERR_STATE;
-    while (r->next_row < (int)r->cfg.height) {
-        int y0 = r->next_row;
+    while (r->priv.next_row < (int)r->cfg.height) {
+        int y0 = r->priv.next_row;
         int n = (int)r->cfg.height - y0;
         zs_status st;
         if (n > band_rows)
@@ -261,13 +246,10 @@ const zs_stats *zs_frame_stats(const zs_renderer *r)
     return r ? &r->stats : 0;
 }
 
-void zs_set_setup_hook(zs_renderer *r,
-                       void (*fn)(void *user, uint16_t tag, const int32_t xy[6],
-                                  const uint32_t z[3]),
-                       void *user)
+void zs_set_setup_hook(zs_renderer *r, zs_setup_hook_fn fn, void *user)
 {
     if (!r)
         return;
-    r->setup_hook = fn;
-    r->setup_hook_user = user;
+    r->priv.setup_hook = fn;
+    r->priv.setup_hook_user = user;
 }

@@ -55,8 +55,8 @@ void zs_project(const zs_renderer *r, int64_t xc, int64_t yc, int32_t w, int16_t
                             32767);
     if (q >= ((int64_t)1 << 30)) {
         zz = 0;
-    } else if (r->depth_scale != 0) {
-        zz = zs_asr64((((int64_t)1 << 30) - q) * r->depth_scale, 30);
+    } else if (r->priv.depth_scale != 0) {
+        zz = zs_asr64((((int64_t)1 << 30) - q) * r->priv.depth_scale, 30);
     } else { /* near close to far: A too large for the product */
         int64_t f = r->cam.far_z;
         zz = (((int64_t)1 << 30) - q) * f / (f - r->cam.near_z);
@@ -67,16 +67,16 @@ void zs_project(const zs_renderer *r, int64_t xc, int64_t yc, int32_t w, int16_t
 uint16_t zs_project_vertex(zs_renderer *r, int64_t xc, int64_t yc, int32_t w, uint32_t shade)
 {
     zs_vert *v;
-    if (r->n_verts >= r->cfg.max_vertices) {
+    if (r->priv.n_verts >= r->cfg.max_vertices) {
         r->stats.verts_dropped++;
         return ZS_NONE;
     }
-    v = &((zs_vert *)r->verts)[r->n_verts];
+    v = &r->priv.verts[r->priv.n_verts];
     zs_project(r, xc, yc, w, &v->x, &v->y, &v->z);
-    if (r->vshade)
-        ((uint32_t *)r->vshade)[r->n_verts] = shade;
-    r->stats.verts_stored = ++r->n_verts;
-    return (uint16_t)(r->n_verts - 1u);
+    if (r->priv.vshade)
+        r->priv.vshade[r->priv.n_verts] = shade;
+    r->stats.verts_stored = ++r->priv.n_verts;
+    return (uint16_t)(r->priv.n_verts - 1u);
 }
 
 int64_t zs_area2(const zs_vert *a, const zs_vert *b, const zs_vert *c)
@@ -137,11 +137,11 @@ static int covers_any(const zs_vert *a, const zs_vert *b, const zs_vert *c, int3
 int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, int64_t area2,
                       uint32_t color, uint16_t tag)
 {
-    const zs_vert *pool = (const zs_vert *)r->verts;
+    const zs_vert *pool = r->priv.verts;
     const zs_vert *a = &pool[i0], *b = &pool[i1], *c = &pool[i2];
     int32_t xmin, xmax, ymin, ymax, row0, row1, col0, col1;
     zs_tri *t;
-    uint16_t *bucket = (uint16_t *)r->buckets;
+    uint16_t *bucket = r->priv.buckets;
     /* counter-clockwise seen from the camera is clockwise with y down */
     if (area2 >= 0)
         return ZS_SETUP_CULLED;
@@ -161,18 +161,18 @@ int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, int
         ((row1 - row0) * (col1 - col0) <= 4 && xmax - xmin < 4096 && ymax - ymin < 4096 &&
          !covers_any(a, b, c, row0, row1, col0, col1)))
         return ZS_SETUP_EMPTY;
-    if (r->n_tris >= r->cfg.max_triangles)
+    if (r->priv.n_tris >= r->cfg.max_triangles)
         return ZS_SETUP_DROPPED; /* capacity policy: the last triangles are dropped */
-    t = &((zs_tri *)r->tris)[r->n_tris];
+    t = &r->priv.tris[r->priv.n_tris];
     t->v[0] = i0;
     t->v[1] = i1;
     t->v[2] = i2;
     t->color = r->shade.format == ZS_FMT_ID16 ? tag : color;
     t->next = bucket[row0];
-    bucket[row0] = r->n_tris;
-    r->n_tris++;
+    bucket[row0] = r->priv.n_tris;
+    r->priv.n_tris++;
     r->stats.records++;
-    if (r->setup_hook) {
+    if (r->priv.setup_hook) {
         int32_t xy[6];
         uint32_t z[3];
         xy[0] = a->x;
@@ -184,7 +184,7 @@ int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, int
         z[0] = a->z;
         z[1] = b->z;
         z[2] = c->z;
-        r->setup_hook(r->setup_hook_user, tag, xy, z);
+        r->priv.setup_hook(r->priv.setup_hook_user, tag, xy, z);
     }
     return ZS_SETUP_STORED;
 }

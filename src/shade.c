@@ -1,5 +1,5 @@
-/* Shading: vertex colours (lighting, fog), colour planes, pixel packing and
- * the span fills that write the line buffer. */
+/* Shading: vertex colours (lighting, fog), colour planes and the Gouraud
+ * span fill (pixel packing is in format.c). */
 #include "zs_internal.h"
 
 #define WHITE 0xFFFFFFu
@@ -36,45 +36,6 @@ static uint32_t fog_mix(uint32_t c, uint32_t fog, uint32_t f)
     return out;
 }
 
-void zs_pack_pixel(zs_format fmt, uint32_t rgb, uint8_t out[4])
-{
-    uint32_t r = (rgb >> 16) & 255u, g = (rgb >> 8) & 255u, b = rgb & 255u;
-    uint16_t v565 = (uint16_t)(((r >> 3) << 11) | ((g >> 2) << 5) | (b >> 3));
-    out[0] = out[1] = out[2] = out[3] = 0;
-    switch (fmt) {
-    case ZS_FMT_RGB565_BE:
-        out[0] = (uint8_t)(v565 >> 8);
-        out[1] = (uint8_t)(v565 & 255u);
-        break;
-    case ZS_FMT_RGB565:
-    case ZS_FMT_ID16: {
-        union {
-            uint16_t v;
-            uint8_t b[2];
-        } u;
-        u.v = v565;
-        out[0] = u.b[0];
-        out[1] = u.b[1];
-        break;
-    }
-    case ZS_FMT_RGB666:
-        out[0] = (uint8_t)(r & 0xFCu);
-        out[1] = (uint8_t)(g & 0xFCu);
-        out[2] = (uint8_t)(b & 0xFCu);
-        break;
-    case ZS_FMT_GRAY8:
-        out[0] = (uint8_t)((77u * r + 150u * g + 29u * b) >> 8);
-        break;
-    case ZS_FMT_RGB888:
-        out[0] = (uint8_t)r;
-        out[1] = (uint8_t)g;
-        out[2] = (uint8_t)b;
-        break;
-    case ZS_FMT_COUNT:
-        break;
-    }
-}
-
 /* Colour at a vertex of triangle t, given its shade word, after modulation
  * and fog. */
 static uint32_t vertex_rgb(const zs_renderer *r, const zs_tri *t, uint32_t shade)
@@ -99,7 +60,6 @@ void zs_shade_setup(const zs_renderer *r, zs_active *a, zs_active_color *ac, con
                     int32_t y)
 {
     uint32_t c[3];
-    uint8_t px[4];
     int k;
     union {
         uint32_t w;
@@ -113,20 +73,15 @@ void zs_shade_setup(const zs_renderer *r, zs_active *a, zs_active_color *ac, con
         a->pixel = u.w;
         return;
     }
-    if ((t->color >> 24) == 0 || !r->vshade) { /* no per-vertex colour: flat */
+    if ((t->color >> 24) == 0 || !r->priv.vshade) { /* no per-vertex colour: flat */
         c[0] = c[1] = c[2] = t->color & WHITE;
     } else {
         for (k = 0; k < 3; k++)
-            c[k] = vertex_rgb(r, t, ((const uint32_t *)r->vshade)[t->v[k]]);
+            c[k] = vertex_rgb(r, t, r->priv.vshade[t->v[k]]);
     }
     if (c[0] == c[1] && c[1] == c[2]) {
         a->flags &= (uint8_t)~ZS_ACT_GOURAUD;
-        zs_pack_pixel(r->shade.format, c[0], px);
-        u.b[0] = px[0];
-        u.b[1] = px[1];
-        u.b[2] = px[2];
-        u.b[3] = px[3];
-        a->pixel = u.w;
+        a->pixel = zs_pixel_word(r->shade.format, c[0]);
         return;
     }
     a->flags |= ZS_ACT_GOURAUD;
@@ -176,15 +131,15 @@ void zs_fill_gouraud(const zs_renderer *r, const zs_active_color *a, uint8_t *ro
     uint32_t cg = a->crow[1] + (uint32_t)a->cdx[1] * (uint32_t)x0;
     uint32_t cb = a->crow[2] + (uint32_t)a->cdx[2] * (uint32_t)x0;
     uint32_t dr = (uint32_t)a->cdx[0], dg = (uint32_t)a->cdx[1], db = (uint32_t)a->cdx[2];
-    uint8_t *p = row + (size_t)x0 * r->bpp;
+    uint8_t *p = row + (size_t)x0 * r->priv.bpp;
     int x;
 #if defined(__OPTIMIZE_SIZE__)
     /* built for size: one loop packing through zs_pack_pixel */
-    for (x = x0; x < x1; x++, p += r->bpp) {
+    for (x = x0; x < x1; x++, p += r->priv.bpp) {
         uint8_t px[4];
         unsigned k;
         zs_pack_pixel(r->shade.format, (channel(cr) << 16) | (channel(cg) << 8) | channel(cb), px);
-        for (k = 0; k < r->bpp; k++)
+        for (k = 0; k < r->priv.bpp; k++)
             p[k] = px[k];
         cr += dr;
         cg += dg;
@@ -193,39 +148,19 @@ void zs_fill_gouraud(const zs_renderer *r, const zs_active_color *a, uint8_t *ro
 #else
     switch (r->shade.format) {
     case ZS_FMT_RGB565_BE:
-        GOURAUD_LOOP(2, {
-            uint32_t v = ((R >> 3) << 11) | ((G >> 2) << 5) | (B >> 3);
-            p[0] = (uint8_t)(v >> 8);
-            p[1] = (uint8_t)v;
-        })
+        GOURAUD_LOOP(2, zs_store_rgb565_be(p, R, G, B))
         break;
     case ZS_FMT_RGB565:
-        GOURAUD_LOOP(2, {
-            union {
-                uint16_t v;
-                uint8_t b[2];
-            } u;
-            u.v = (uint16_t)(((R >> 3) << 11) | ((G >> 2) << 5) | (B >> 3));
-            p[0] = u.b[0];
-            p[1] = u.b[1];
-        })
+        GOURAUD_LOOP(2, zs_store_rgb565(p, R, G, B))
         break;
     case ZS_FMT_RGB666:
-        GOURAUD_LOOP(3, {
-            p[0] = (uint8_t)(R & 0xFCu);
-            p[1] = (uint8_t)(G & 0xFCu);
-            p[2] = (uint8_t)(B & 0xFCu);
-        })
+        GOURAUD_LOOP(3, zs_store_rgb666(p, R, G, B))
         break;
     case ZS_FMT_GRAY8:
-        GOURAUD_LOOP(1, p[0] = (uint8_t)((77u * R + 150u * G + 29u * B) >> 8))
+        GOURAUD_LOOP(1, zs_store_gray8(p, R, G, B))
         break;
     default:
-        GOURAUD_LOOP(3, {
-            p[0] = (uint8_t)R;
-            p[1] = (uint8_t)G;
-            p[2] = (uint8_t)B;
-        })
+        GOURAUD_LOOP(3, zs_store_rgb888(p, R, G, B))
         break;
     }
 #endif

@@ -70,7 +70,7 @@ static int32_t overtake(const zs_active *j, const zs_active *top, int32_t x,
 /* Picks the top among the whole set at column x and the next crossing. */
 static void retop(row_ctx *c, int32_t x)
 {
-    int ns = c->r->n_set, k;
+    int ns = c->r->priv.n_set, k;
     zs_active *best = 0;
     int64_t bz = 0;
     for (k = 0; k < ns; k++) {
@@ -103,12 +103,12 @@ static void flush(row_ctx *c, int32_t x)
     if (x <= x0)
         return;
     if (!a)
-        zs_fill_flat(c->row, x0, x, c->r->bpp, c->background);
+        zs_fill_flat(c->row, x0, x, c->r->priv.bpp, c->background);
     else if (a->flags & ZS_ACT_GOURAUD)
-        zs_fill_gouraud(c->r, &((const zs_active_color *)c->r->acolor)[a - c->act], c->row, x0,
+        zs_fill_gouraud(c->r, &c->r->priv.acolor[a - c->act], c->row, x0,
                         x);
     else
-        zs_fill_flat(c->row, x0, x, c->r->bpp, a->pixel);
+        zs_fill_flat(c->row, x0, x, c->r->priv.bpp, a->pixel);
     c->r->stats.spans++;
 }
 
@@ -140,8 +140,8 @@ static void emit(row_ctx *c, int32_t x0, int32_t x1)
 static void enter(row_ctx *c, zs_active *a, uint16_t ai, int32_t x)
 {
     int64_t za, zt;
-    a->set_pos = c->r->n_set;
-    c->set[c->r->n_set++] = ai;
+    a->set_pos = c->r->priv.n_set;
+    c->set[c->r->priv.n_set++] = ai;
     a->cross = NO_CROSS;
     a->xr = (int16_t)zs_clampi(c->edges[a->right].x, 0, c->width);
     if (c->dirty)
@@ -165,20 +165,20 @@ static void enter(row_ctx *c, zs_active *a, uint16_t ai, int32_t x)
 
 static void leave(row_ctx *c, zs_active *a, int32_t x)
 {
-    uint16_t last = c->set[--c->r->n_set];
+    uint16_t last = c->set[--c->r->priv.n_set];
     c->set[a->set_pos] = last;
     c->act[last].set_pos = a->set_pos;
     (void)x;
     if (a == c->top) {
         c->top = 0;
         c->min_cross = NO_CROSS;
-        c->dirty = c->r->n_set > 0;
+        c->dirty = c->r->priv.n_set > 0;
     } else if (c->dirty) {
         return;
     } else if (a->cross == c->min_cross && a->cross != NO_CROSS) {
         int k;
         c->min_cross = NO_CROSS;
-        for (k = 0; k < c->r->n_set; k++) {
+        for (k = 0; k < c->r->priv.n_set; k++) {
             const zs_active *m = &c->act[c->set[k]];
             if (m != c->top && m->cross < c->min_cross)
                 c->min_cross = m->cross;
@@ -188,16 +188,15 @@ static void leave(row_ctx *c, zs_active *a, int32_t x)
 
 void zs_span_row(zs_renderer *r, int y, uint8_t *row)
 {
-    const uint16_t *ael = (const uint16_t *)r->ael;
+    const uint16_t *ael = r->priv.ael;
     row_ctx c;
     int32_t cur = 0;
-    int i, n = r->n_ael;
-    uint8_t bgpx[4];
+    int i, n = r->priv.n_ael;
     (void)y;
     c.r = r;
-    c.act = (zs_active *)r->active;
-    c.edges = (const zs_edge *)r->edges;
-    c.set = (uint16_t *)r->in_set;
+    c.act = r->priv.active;
+    c.edges = r->priv.edges;
+    c.set = r->priv.in_set;
     c.row = row;
     c.top = 0;
     c.pend_top = 0;
@@ -206,20 +205,8 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
     c.width = r->cfg.width;
     c.min_cross = NO_CROSS;
     c.evals = 0;
-    zs_pack_pixel(r->shade.format, r->shade.format == ZS_FMT_ID16 ? 0 : r->shade.background,
-                  bgpx);
-    {
-        union {
-            uint32_t w;
-            uint8_t b[4];
-        } u;
-        u.b[0] = bgpx[0];
-        u.b[1] = bgpx[1];
-        u.b[2] = bgpx[2];
-        u.b[3] = bgpx[3];
-        c.background = u.w;
-    }
-    r->n_set = 0;
+    c.background = zs_background_word(r);
+    r->priv.n_set = 0;
     for (i = 0; i < n; i++) {
         const zs_edge *e = &c.edges[ael[i]];
         int32_t x = zs_clampi(e->x, 0, c.width);

@@ -5,30 +5,17 @@
 
 void zs_zline_row(zs_renderer *r, int y, uint8_t *row)
 {
-    const zs_edge *edges = (const zs_edge *)r->edges;
-    const uint16_t *ael = (const uint16_t *)r->ael;
-    const zs_active *act = (const zs_active *)r->active;
-    int64_t *depth = (int64_t *)r->zline_depth;
-    uint16_t *owner = (uint16_t *)r->zline_owner;
+    const zs_edge *edges = r->priv.edges;
+    const uint16_t *ael = r->priv.ael;
+    const zs_active *act = r->priv.active;
+    int64_t *depth = r->priv.zline_depth;
+    uint16_t *owner = r->priv.zline_owner;
     int32_t w = r->cfg.width, x;
-    unsigned bpp = r->bpp;
-    uint8_t bgpx[4];
+    unsigned bpp = r->priv.bpp;
     uint32_t background;
     int i;
     (void)y;
-    zs_pack_pixel(r->shade.format, r->shade.format == ZS_FMT_ID16 ? 0 : r->shade.background,
-                  bgpx);
-    {
-        union {
-            uint32_t w;
-            uint8_t b[4];
-        } u;
-        u.b[0] = bgpx[0];
-        u.b[1] = bgpx[1];
-        u.b[2] = bgpx[2];
-        u.b[3] = bgpx[3];
-        background = u.w;
-    }
+    background = zs_background_word(r);
     zs_fill_flat(row, 0, w, bpp, background);
     r->stats.spans++;
     r->stats.pixels_shaded += (uint32_t)w;
@@ -36,7 +23,7 @@ void zs_zline_row(zs_renderer *r, int y, uint8_t *row)
         depth[x] = INT64_MAX;
         owner[x] = ZS_NONE;
     }
-    for (i = 0; i < r->n_ael; i++) {
+    for (i = 0; i < r->priv.n_ael; i++) {
         const zs_edge *e = &edges[ael[i]];
         const zs_active *a;
         int32_t xl, xr;
@@ -56,7 +43,7 @@ void zs_zline_row(zs_renderer *r, int y, uint8_t *row)
                 depth[x] = z;
                 owner[x] = a->tri;
                 if (a->flags & ZS_ACT_GOURAUD)
-                    zs_fill_gouraud(r, &((const zs_active_color *)r->acolor)[e->lead], row, x,
+                    zs_fill_gouraud(r, &r->priv.acolor[e->lead], row, x,
                                     x + 1);
                 else
                     zs_fill_flat(row, x, x + 1, bpp, a->pixel);

@@ -171,8 +171,48 @@ void zs_continue_edge(zs_renderer *r, uint16_t ai, int32_t y);
 void zs_raster_begin(zs_renderer *r);
 void zs_raster_row(zs_renderer *r, int y, uint8_t *row); /* row NULL: step only */
 
-/* shade.c: pixel packing and span fills */
+/* format.c: pixel packing. Each format's bytes from 8-bit channels, inline
+ * so the Gouraud fill packs every pixel without a call. */
+static inline void zs_store_rgb565_be(uint8_t *p, uint32_t r, uint32_t g, uint32_t b)
+{
+    uint32_t v = ((r >> 3) << 11) | ((g >> 2) << 5) | (b >> 3);
+    p[0] = (uint8_t)(v >> 8);
+    p[1] = (uint8_t)v;
+}
+static inline void zs_store_rgb565(uint8_t *p, uint32_t r, uint32_t g, uint32_t b)
+{
+    union {
+        uint16_t v;
+        uint8_t b[2];
+    } u; /* the host's byte order */
+    u.v = (uint16_t)(((r >> 3) << 11) | ((g >> 2) << 5) | (b >> 3));
+    p[0] = u.b[0];
+    p[1] = u.b[1];
+}
+static inline void zs_store_rgb666(uint8_t *p, uint32_t r, uint32_t g, uint32_t b)
+{
+    p[0] = (uint8_t)(r & 0xFCu);
+    p[1] = (uint8_t)(g & 0xFCu);
+    p[2] = (uint8_t)(b & 0xFCu);
+}
+static inline void zs_store_gray8(uint8_t *p, uint32_t r, uint32_t g, uint32_t b)
+{
+    p[0] = (uint8_t)((77u * r + 150u * g + 29u * b) >> 8); /* BT.601 luma */
+}
+static inline void zs_store_rgb888(uint8_t *p, uint32_t r, uint32_t g, uint32_t b)
+{
+    p[0] = (uint8_t)r;
+    p[1] = (uint8_t)g;
+    p[2] = (uint8_t)b;
+}
 void zs_pack_pixel(zs_format fmt, uint32_t rgb, uint8_t out[4]);
+/* The packed pixel as a word whose bytes in memory are the pixel's bytes
+ * (what zs_fill_flat writes). */
+uint32_t zs_pixel_word(zs_format fmt, uint32_t rgb);
+/* The frame's packed background (tag 0 in ZS_FMT_ID16). */
+uint32_t zs_background_word(const zs_renderer *r);
+
+/* shade.c: colour planes and the Gouraud span fill */
 void zs_fill_gouraud(const zs_renderer *r, const zs_active_color *a, uint8_t *row, int x0, int x1);
 /* Sets the colour planes and flat pixel of an active triangle. */
 /* ac: the triangle's colour planes, NULL for a flat-only renderer. */

@@ -346,27 +346,62 @@ typedef struct zs_stats {
 /* The renderer                                                         */
 /* ------------------------------------------------------------------ */
 
-/* Holds the arena and the frame state. Fields are private (they may change
- * between versions); the struct is public so it can be allocated statically. */
-typedef struct zs_renderer {
-    zs_config cfg;
-    zs_stats stats;
-    zs_shade_params shade;
-    zs_camera cam;
-    /* private: arena pools */
-    void *verts, *vshade, *tris, *buckets, *edges, *ael, *edge_free, *active, *acolor,
-        *in_set, *active_free, *zline_depth, *zline_owner;
-    int32_t guard;                    /* guard band, in units of w */
-    /* private: frame state */
+/* Called by zs_draw for every triangle record it stores (see
+ * zs_set_setup_hook): the tag, the snapped screen vertices (x0,y0,x1,y1,x2,y2
+ * in 28.4 pixels, y down) and the window depths (Q2.30). */
+typedef void (*zs_setup_hook_fn)(void *user, uint16_t tag, const int32_t xy[6],
+                                 const uint32_t z[3]);
+
+/* The core's records, defined in src/zs_internal.h; a user never needs them. */
+struct zs_vert;
+struct zs_tri;
+struct zs_edge;
+struct zs_active;
+struct zs_active_color;
+
+/* The renderer's private state: pools carved from the arena and the frame
+ * in progress. It may change between versions; do not use it. */
+typedef struct zs_renderer_private {
+    /* arena pools */
+    struct zs_vert *verts;          /* screen vertices of the frame */
+    uint32_t *vshade;               /* their shade words; NULL if flat only */
+    struct zs_tri *tris;            /* triangle records */
+    uint16_t *buckets;              /* per row: first record starting there */
+    struct zs_edge *edges;          /* edge records */
+    uint16_t *ael;                  /* active edge list (edge indices) */
+    uint16_t *edge_free;            /* free edge records */
+    struct zs_active *active;       /* active triangles */
+    struct zs_active_color *acolor; /* their colour planes; NULL if flat only */
+    uint16_t *in_set;               /* span mode: the in-polygon set */
+    uint16_t *active_free;          /* free active triangles */
+    int64_t *zline_depth;           /* z-buffer line; NULL with ZS_CFG_NO_ZLINE  */
+    uint32_t *sort_keys;            /* span mode: edge sort keys, in the
+                                       z-buffer line's storage (idle then) */
+    uint16_t *zline_owner;          /* triangle owning each z-buffer pixel */
+    int32_t guard;                  /* guard band, in units of w */
+    /* frame state */
     zs_vec3 light_dir[ZS_MAX_LIGHTS]; /* unit, Q16.16 */
     zs_fixed proj_sx, proj_sy;        /* clip-space x and y scale */
     int64_t depth_scale;              /* far / (far - near) in Q30, 0 if >= 8 */
     uint32_t tag_counter;
     int32_t next_row;
     uint16_t n_verts, n_tris, n_ael, n_sorted, n_edge_free, n_active_free, n_set;
-    uint8_t state, mode, bpp, pad_;
-    void (*setup_hook)(void *user, uint16_t tag, const int32_t xy[6], const uint32_t z[3]);
+    uint8_t state, mode, bpp;
+    uint8_t steep;                    /* a steep plane is active this frame */
+    zs_setup_hook_fn setup_hook;
     void *setup_hook_user;
+} zs_renderer_private;
+
+/* Holds the arena's pools and the frame state. The struct is public so it
+ * can be allocated statically; a user may read cfg, stats, shade and cam
+ * (through the functions below where there is one) and never writes any
+ * field; priv is private. */
+typedef struct zs_renderer {
+    zs_config cfg;         /* the configuration given to zs_init */
+    zs_stats stats;        /* this frame's statistics (zs_frame_stats) */
+    zs_shade_params shade; /* this frame's shading (zs_frame_shading) */
+    zs_camera cam;         /* this frame's camera (zs_frame_begin) */
+    zs_renderer_private priv;
 } zs_renderer;
 
 /* Checks the config and carves the arena (any alignment; ZS_ARENA_BYTES
@@ -418,10 +453,7 @@ const zs_stats *zs_frame_stats(const zs_renderer *r);
 /* Debug/verification hook: called for every triangle record stored by
  * zs_draw with its tag, the snapped screen vertices (x0,y0,x1,y1,x2,y2 in
  * 28.4 pixels, y down) and window depths (Q2.30). NULL disables. */
-void zs_set_setup_hook(zs_renderer *r,
-                       void (*fn)(void *user, uint16_t tag, const int32_t xy[6],
-                                  const uint32_t z[3]),
-                       void *user);
+void zs_set_setup_hook(zs_renderer *r, zs_setup_hook_fn fn, void *user);
 
 #ifdef __cplusplus
 }

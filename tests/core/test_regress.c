@@ -124,7 +124,7 @@ static void test_clip_stays_in_bounds(void **state)
     int n, k;
     (void)state;
     memset(&r, 0, sizeof r);
-    r.guard = 4;
+    r.priv.guard = 4;
     r.cam.near_z = 6553;
     r.cam.far_z = ZS_FX(100);
     in[0].xc = 34435837;

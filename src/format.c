@@ -1,0 +1,64 @@
+/* Pixel formats: bytes per pixel, and packing an RGB888 colour into the
+ * bytes the line buffer holds (the panel's byte order). */
+#include "zs_internal.h"
+
+unsigned zs_format_bytes(zs_format fmt)
+{
+    switch (fmt) {
+    case ZS_FMT_RGB565_BE:
+    case ZS_FMT_RGB565:
+    case ZS_FMT_ID16:
+        return 2;
+    case ZS_FMT_RGB666:
+    case ZS_FMT_RGB888:
+        return 3;
+    case ZS_FMT_GRAY8:
+        return 1;
+    case ZS_FMT_COUNT:
+        break;
+    }
+    return 0;
+}
+
+void zs_pack_pixel(zs_format fmt, uint32_t rgb, uint8_t out[4])
+{
+    uint32_t r = (rgb >> 16) & 255u, g = (rgb >> 8) & 255u, b = rgb & 255u;
+    out[0] = out[1] = out[2] = out[3] = 0;
+    switch (fmt) {
+    case ZS_FMT_RGB565_BE:
+        zs_store_rgb565_be(out, r, g, b);
+        break;
+    case ZS_FMT_RGB565:
+    case ZS_FMT_ID16:
+        zs_store_rgb565(out, r, g, b);
+        break;
+    case ZS_FMT_RGB666:
+        zs_store_rgb666(out, r, g, b);
+        break;
+    case ZS_FMT_GRAY8:
+        zs_store_gray8(out, r, g, b);
+        break;
+    case ZS_FMT_RGB888:
+        zs_store_rgb888(out, r, g, b);
+        break;
+    case ZS_FMT_COUNT:
+        break;
+    }
+}
+
+uint32_t zs_pixel_word(zs_format fmt, uint32_t rgb)
+{
+    union {
+        uint32_t w;
+        uint8_t b[4];
+    } u;
+    zs_pack_pixel(fmt, rgb, u.b);
+    return u.w;
+}
+
+uint32_t zs_background_word(const zs_renderer *r)
+{
+    /* ID16 marks "no triangle" with tag 0, whatever the background colour */
+    return zs_pixel_word(r->shade.format,
+                         r->shade.format == ZS_FMT_ID16 ? 0 : r->shade.background);
+}

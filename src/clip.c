@@ -88,10 +88,12 @@ static zs_svert intersect(const zs_renderer *r, int p, const zs_svert *in, const
 
 int zs_clip_polygon(const zs_renderer *r, const zs_svert *in, int n, zs_svert *out)
 {
-    zs_svert buf[2][9];
+    /* planes alternate between buf and out (one scratch polygon on the
+     * stack, not two: clip vertices are 32 bytes); the first plane that cuts
+     * reads in and writes buf, so out may be in */
+    zs_svert buf[9];
     const zs_svert *src = in;
     int p, i, cnt = n;
-    int which = 0;
     for (p = 0; p < 6 && cnt >= 3; p++) {
         int64_t d[9];
         int any_out = 0;
@@ -104,7 +106,7 @@ int zs_clip_polygon(const zs_renderer *r, const zs_svert *in, int n, zs_svert *o
         }
         if (!any_out)
             continue;
-        dst = buf[which];
+        dst = src == buf ? out : buf;
         for (i = 0; i < cnt; i++) {
             int j = (i + 1 == cnt) ? 0 : i + 1;
             int in_i = d[i] >= 0, in_j = d[j] >= 0;
@@ -121,11 +123,11 @@ int zs_clip_polygon(const zs_renderer *r, const zs_svert *in, int n, zs_svert *o
         }
         src = dst;
         cnt = m;
-        which ^= 1;
     }
     if (cnt < 3)
         return 0;
-    for (i = 0; i < cnt; i++)
-        out[i] = src[i];
+    if (src != out)
+        for (i = 0; i < cnt; i++)
+            out[i] = src[i];
     return cnt;
 }

@@ -279,16 +279,16 @@ static int clip_and_setup(draw_ctx *c, uint16_t base, const uint16_t idx[3], uin
 {
     zs_renderer *r = c->r;
     zs_vert *pool = r->priv.verts;
-    zs_svert in[3], out[9];
+    zs_svert v[9]; /* the triangle, clipped in place (clip.c allows it) */
     unsigned and_codes = 0xFFu;
     int n, k, outcome = ZS_SETUP_REJECTED;
     uint32_t color;
     for (k = 0; k < 3; k++) {
         const zs_vert *pv = &pool[base + idx[k]];
-        to_clip(c, idx[k], &in[k].xc, &in[k].yc, &in[k].w);
-        in[k].shade = r->priv.vshade ? r->priv.vshade[base + idx[k]] : 0;
-        in[k].pool = (pv->z & ZS_VERT_UNPROJECTED) ? (uint16_t)ZS_NONE : (uint16_t)(base + idx[k]);
-        and_codes &= zs_outcode(r, in[k].xc, in[k].yc, in[k].w);
+        to_clip(c, idx[k], &v[k].xc, &v[k].yc, &v[k].w);
+        v[k].shade = r->priv.vshade ? r->priv.vshade[base + idx[k]] : 0;
+        v[k].pool = (pv->z & ZS_VERT_UNPROJECTED) ? (uint16_t)ZS_NONE : (uint16_t)(base + idx[k]);
+        and_codes &= zs_outcode(r, v[k].xc, v[k].yc, v[k].w);
     }
     if (and_codes & REJECT_MASK)
         return ZS_SETUP_REJECTED;
@@ -296,32 +296,33 @@ static int clip_and_setup(draw_ctx *c, uint16_t base, const uint16_t idx[3], uin
     /* start from a canonical vertex: the same triangle with its vertices
      * rotated is then cut into the same pieces (equal planes, so exact ties
      * still go to the earlier triangle) */
-    k = first_vertex(in);
-    if (k != 0) {
-        zs_svert rot[3];
-        rot[0] = in[k];
-        rot[1] = in[(k + 1) % 3];
-        rot[2] = in[(k + 2) % 3];
-        in[0] = rot[0];
-        in[1] = rot[1];
-        in[2] = rot[2];
+    k = first_vertex(v);
+    if (k == 1) {
+        zs_svert tmp = v[0];
+        v[0] = v[1];
+        v[1] = v[2];
+        v[2] = tmp;
+    } else if (k == 2) {
+        zs_svert tmp = v[2];
+        v[2] = v[1];
+        v[1] = v[0];
+        v[0] = tmp;
     }
-    n = zs_clip_polygon(r, in, 3, out);
+    n = zs_clip_polygon(r, v, 3, v);
     if (n < 3)
         return ZS_SETUP_REJECTED;
     color = face_color(c, t, idx);
     for (k = 0; k < n; k++)
-        if (out[k].pool == ZS_NONE)
-            out[k].pool = zs_project_vertex(r, out[k].xc, out[k].yc, (int32_t)out[k].w,
-                                            out[k].shade);
+        if (v[k].pool == ZS_NONE)
+            v[k].pool = zs_project_vertex(r, v[k].xc, v[k].yc, (int32_t)v[k].w, v[k].shade);
     for (k = 1; k + 1 < n; k++) {
         int piece;
-        if (out[0].pool == ZS_NONE || out[k].pool == ZS_NONE || out[k + 1].pool == ZS_NONE)
+        if (v[0].pool == ZS_NONE || v[k].pool == ZS_NONE || v[k + 1].pool == ZS_NONE)
             piece = ZS_SETUP_DROPPED;
         else
-            piece = zs_setup_triangle(r, out[0].pool, out[k].pool, out[k + 1].pool,
-                                      zs_area2(&pool[out[0].pool], &pool[out[k].pool],
-                                               &pool[out[k + 1].pool]),
+            piece = zs_setup_triangle(r, v[0].pool, v[k].pool, v[k + 1].pool,
+                                      zs_area2(&pool[v[0].pool], &pool[v[k].pool],
+                                               &pool[v[k + 1].pool]),
                                       color, tag);
         outcome = merge_outcome(outcome, piece);
     }

@@ -145,7 +145,8 @@ int zs_setup_triangle(zs_renderer *r, uint16_t v0, uint16_t v1, uint16_t v2, int
                       uint32_t color,
                       uint16_t tag);
 /* clip.c: clips polygon in[n] against the near/far planes and the guard band;
- * returns the vertex count of out (0..9). out must hold 9. */
+ * returns the vertex count of out (0..9). out must hold 9; it may be in
+ * (in is read only before the first plane that cuts). */
 int zs_clip_polygon(const zs_renderer *r, const zs_svert *in, int n, zs_svert *out);
 /* Outcodes of a clip-space vertex. */
 #define ZS_OUT_NEAR 0x01u

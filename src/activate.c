@@ -109,6 +109,28 @@ static void depth_plane(zs_active *a, const zs_vert *s[3], const zs_recip *area2
     a->zrow = z0 + a->zdy * ((int64_t)y - oy) - a->zdx * ox;
 }
 
+/* The depth range the span walk decides by without evaluating planes. At a
+ * covered centre the true plane lies between the vertex depths, and an
+ * evaluation differs from it by less than 2^24 Q40: for a non-steep plane by
+ * the gradients' rounding (relative 2^-30) over its extent, under
+ * 2^46 * 2^-30 + 2^14; for a steep one by its zdx's rounding alone (|zdx| <=
+ * 2^40 wherever a row holds two covered centres) over fewer than
+ * ZS_MAX_DIM = 2^10 columns, under 2^11 * 2^10. */
+static void depth_range(zs_active *a, const zs_vert *s[3])
+{
+    uint32_t z0 = s[0]->z, z1 = s[1]->z, z2 = s[2]->z;
+    uint32_t lo = z0 < z1 ? z0 : z1, hi = z0 < z1 ? z1 : z0;
+    if (z2 < lo)
+        lo = z2;
+    if (z2 > hi)
+        hi = z2;
+    /* Q30 depths <= 2^30; one 2^-15 unit (2^15 Q30 = 2^25 Q40) of slack on
+     * each side: zlo = floor(lo / 2^15) - 1, zhi = floor(hi / 2^15) + 2 */
+    lo >>= 15;
+    a->zlo = (uint16_t)(lo > 0 ? lo - 1u : 0u);
+    a->zhi = (uint16_t)((hi >> 15) + 2u);
+}
+
 /* The triangle's vertices in a canonical order: by y, then by x. Two
  * vertices of a stored triangle never share both, so equal triangles get
  * equal edges and equal planes however their vertices were rotated. */
@@ -196,6 +218,8 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     a->set_pos = 0;
     a->flags = long_left ? ZS_ACT_LONG_LEFT : 0;
     a->y_end = (int16_t)zs_first_row(s[2]->y);
+    if (r->priv.mode == ZS_MODE_SPAN)
+        depth_range(a, s);
     long_edge = new_edge(r, ai, long_left, s[0], s[2], y);
     if (y < zs_first_row(s[1]->y))
         short_edge = new_edge(r, ai, !long_left, s[0], s[1], y);

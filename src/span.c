@@ -67,12 +67,48 @@ static int32_t overtake(const zs_active *j, const zs_active *top, int32_t x,
     return x + (int32_t)k;
 }
 
+/* Is a nearer than b at every centre both cover? (Their depth ranges say
+ * so without evaluating either plane.) */
+static int always_nearer(const zs_active *a, const zs_active *b)
+{
+    return a->zhi <= b->zlo;
+}
+
 /* Picks the top among the whole set at column x and the next crossing. */
 static void retop(row_ctx *c, int32_t x)
 {
     int ns = c->r->priv.n_set, k;
     zs_active *best = 0;
     int64_t bz = 0;
+    /* First by depth ranges alone: the member whose range ends first wins
+     * outright if it ends before every other range starts (typical where
+     * surfaces are apart in depth); then no plane is evaluated and nothing
+     * can overtake it. */
+    {
+        zs_active *near = 0;
+        const zs_active *lo1_of = 0;
+        uint16_t lo1 = 0xFFFFu, lo2 = 0xFFFFu; /* the two smallest zlo */
+        for (k = 0; k < ns; k++) {
+            zs_active *a = &c->act[c->set[k]];
+            if (!near || a->zhi < near->zhi)
+                near = a;
+            if (a->zlo < lo1) {
+                lo2 = lo1;
+                lo1 = a->zlo;
+                lo1_of = a;
+            } else if (a->zlo < lo2) {
+                lo2 = a->zlo;
+            }
+        }
+        if (near && near->zhi <= (near == lo1_of ? lo2 : lo1)) {
+            c->top = near;
+            c->dirty = 0;
+            c->min_cross = NO_CROSS;
+            for (k = 0; k < ns; k++)
+                c->act[c->set[k]].cross = NO_CROSS;
+            return;
+        }
+    }
     for (k = 0; k < ns; k++) {
         zs_active *a = &c->act[c->set[k]];
         a->zcur = depth_at(a, x);
@@ -89,7 +125,7 @@ static void retop(row_ctx *c, int32_t x)
         zs_active *a = &c->act[c->set[k]];
         if (a == best)
             continue;
-        a->cross = overtake(a, best, x, a->zcur, bz);
+        a->cross = always_nearer(best, a) ? NO_CROSS : overtake(a, best, x, a->zcur, bz);
         if (a->cross < c->min_cross)
             c->min_cross = a->cross;
     }
@@ -149,6 +185,12 @@ static void enter(row_ctx *c, zs_active *a, uint16_t ai, int32_t x)
     if (!c->top) {
         c->top = a;
         c->min_cross = NO_CROSS;
+        return;
+    }
+    if (always_nearer(c->top, a))
+        return; /* behind the top wherever both are: no crossing either */
+    if (always_nearer(a, c->top)) {
+        retop(c, x); /* the new top; every member's crossing changes */
         return;
     }
     za = depth_at(a, x);

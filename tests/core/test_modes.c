@@ -6,6 +6,10 @@
  * are skipped), on random scenes with penetrations, abutting pairs sharing
  * edges, coplanar duplicates, near-plane crossings and large tilted planes.
  *
+ * Depth-range decisions (the span walk orders triangles whose depth ranges
+ * are disjoint without evaluating planes) are covered by the layered scenes
+ * and checked to happen by test_depth_ranges.
+ *
  * Pixel packing is checked separately against formulas written here: one big
  * flat triangle of a known colour, ambient 1.0 and no lights, every format.
  */
@@ -88,6 +92,7 @@ static void test_span_equals_zline(void **state)
         if (k % 5 == 1) flags = ZT_SC_PLAIN | ZT_SC_DUP;
         if (k % 5 == 2) flags = ZT_SC_SHARED | ZT_SC_FLAT | ZT_SC_DUP;
         if (k % 5 == 3) flags = ZT_SC_NEAR | ZT_SC_PLAIN;
+        if (k % 5 == 4) flags = ZT_SC_LAYERS | ZT_SC_PLAIN;
         zt_scene_random(&g, &sc, ntri, flags, near_d);
         int colours = k % 3; /* face colours, vertex colours, mesh colour */
         zs_mesh m = zt_scene_mesh(&sc, colours == 0, colours == 1);
@@ -140,6 +145,48 @@ static void test_span_equals_zline(void **state)
     }
     free(ref);
     free(img);
+    zt_scene_free(&sc);
+    zt_ctx_free(&c);
+}
+
+/* Depth ranges: layers far apart in depth are ordered by their ranges alone.
+ * Three screen-covering quads at eye depths 8, 4 and 2 (submitted far to
+ * near): every pixel shows the nearest, span mode evaluates no plane, and
+ * the image equals the z-buffer mode's. */
+static void test_depth_ranges(void **state)
+{
+    (void)state;
+    zt_ctx c;
+    zt_ctx_init(&c, W, H, 16, 16, 32);
+    zs_camera cam;
+    zt_camera_std(&cam, ZS_FX(1) / 2, ZS_FX(60));
+    zt_scene sc;
+    zt_scene_init(&sc, W, H, 128);
+    const double depth[3] = {8.0, 4.0, 2.0};
+    for (int l = 0; l < 3; l++) {
+        int v[4];
+        v[0] = zt_scene_vertex_px(&sc, -10, -10, depth[l], 0);
+        v[1] = zt_scene_vertex_px(&sc, W + 10, -10, depth[l], 0);
+        v[2] = zt_scene_vertex_px(&sc, W + 10, H + 10, depth[l], 0);
+        v[3] = zt_scene_vertex_px(&sc, -10, H + 10, depth[l], 0);
+        zt_scene_tri_front(&sc, v[0], v[1], v[2], 0x102030u * (unsigned)(l + 1));
+        zt_scene_tri_front(&sc, v[0], v[2], v[3], 0x302010u * (unsigned)(l + 1));
+    }
+    zs_mesh m = zt_scene_mesh(&sc, 1, 0);
+    static uint8_t span[W * H * 2], zline[W * H * 2];
+    ZT_ST(zt_frame(&c, &cam, ZS_MODE_ZLINE, NULL, &m, 1, NULL, zline, H), ZS_OK);
+    ZT_ST(zt_frame(&c, &cam, ZS_MODE_SPAN, NULL, &m, 1, NULL, span, H), ZS_OK);
+    const zs_stats *st = zs_frame_stats(&c.r);
+    ZT_CHECK(st->tris_drawn == 6, "%u of 6 triangles drawn", st->tris_drawn);
+    ZT_CHECK(st->depth_evals == 0, "span mode evaluated %u planes for disjoint layers",
+             st->depth_evals);
+    ZT_CHECK(zt_first_diff(span, zline, sizeof span) < 0, "span differs from zline");
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            uint16_t id = zt_id_at(span, W, x, y);
+            ZT_CHECK(id == 5 || id == 6, "pixel (%d,%d) shows triangle %u, not the nearest "
+                     "layer (5 or 6)", x, y, id);
+        }
     zt_scene_free(&sc);
     zt_ctx_free(&c);
 }
@@ -233,6 +280,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_packing),
         cmocka_unit_test(test_span_equals_zline),
+        cmocka_unit_test(test_depth_ranges),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     fflush(stderr);

@@ -50,6 +50,7 @@ static void run(zs_visibility mode)
         unsigned flags = ZT_SC_ALL;
         if (n % 4 == 1) flags = ZT_SC_PLAIN;            /* penetration-heavy */
         if (n % 4 == 2) flags = ZT_SC_FLAT | ZT_SC_SHARED | ZT_SC_DUP;
+        if (n % 4 == 3) flags = ZT_SC_LAYERS | ZT_SC_PLAIN; /* depth-range decisions */
         zt_scene_random(&g, &sc, ntri, flags, near_d);
         zs_mesh mesh = zt_scene_mesh(&sc, 1, 0);
         memset(img, 0xAB, sizeof img);

@@ -532,9 +532,9 @@ static zs_color zt_rand_color(zt_rng *g) { return (zs_color)(zt_u32(g) & 0xFFFFF
 
 void zt_scene_random(zt_rng *g, zt_scene *s, int ntri, unsigned flags, double near_d)
 {
-    unsigned kinds[6];
+    unsigned kinds[7];
     int nk = 0;
-    for (int b = 0; b < 6; b++)
+    for (int b = 0; b < 7; b++)
         if (flags & (1u << b)) kinds[nk++] = 1u << b;
     if (nk == 0) return;
     int start_nt = (int)s->nt;
@@ -603,6 +603,24 @@ void zt_scene_random(zt_rng *g, zt_scene *s, int ntri, unsigned flags, double ne
                 }
             }
             zt_scene_tri_front(s, v[0], v[1], v[2], fc);
+        } else if (k == ZT_SC_LAYERS) {
+            /* 2..4 triangles over one region, each vertex at its layer's
+             * depth plus 0..2 position units, layers 1..3 units apart: at
+             * depth d one unit moves window depth by about near / (d^2 *
+             * unit_div), from well over to well under the span walk's
+             * 2^-15 range resolution */
+            int nl = 2 + (int)zt_below(g, 3);
+            double d = base * 2, unit = 1.0 / s->unit_div;
+            for (int l = 0; l < nl; l++) {
+                int v[3];
+                for (int i = 0; i < 3; i++) {
+                    double a = 6.283185307179586 * (i + zt_uniform(g, -0.15, 0.15)) / 3;
+                    v[i] = zt_scene_vertex_px(s, cx + sz * cos(a), cy + sz * sin(a),
+                                              d + unit * (double)zt_below(g, 3), zt_rand_color(g));
+                }
+                zt_scene_tri_front(s, v[0], v[1], v[2], zt_rand_color(g));
+                d += unit * (double)(1 + zt_below(g, 3));
+            }
         } else { /* ZT_SC_BIG: a tilted plane beyond the screen, two triangles */
             double d0 = base * 2, tx = zt_uniform(g, -0.5, 0.5), ty = zt_uniform(g, -0.5, 0.5);
             double px[4] = {-0.5 * W, 1.5 * W, 1.5 * W, -0.5 * W};

@@ -144,7 +144,10 @@ enum {
                            indices, or copied vertices */
     ZT_SC_NEAR = 16,    /* crossing the near plane or reaching behind the eye */
     ZT_SC_BIG = 32,     /* large tilted planes, partly off-screen */
-    ZT_SC_ALL = 63
+    ZT_SC_LAYERS = 64,  /* overlapping stacked triangles whose vertex depths
+                           are a few position units apart, some equal: depth
+                           ranges that just touch, just miss or overlap */
+    ZT_SC_ALL = 127
 };
 void zt_scene_random(zt_rng *g, zt_scene *s, int ntri, unsigned flags, double near_d);
 

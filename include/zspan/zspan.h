@@ -339,7 +339,7 @@ typedef struct zs_stats {
                                   zs_config.max_active_edges from */
     uint32_t depth_evals;      /* plane evaluations for visibility */
     uint32_t crossings;        /* penetration crossings split inside a row */
-    uint32_t pixels_shaded;    /* pixel writes (== width * rows in span mode) */
+    uint32_t pixels_shaded;    /* pixel writes (== width * rows: each pixel once) */
 } zs_stats;
 
 /* ------------------------------------------------------------------ */

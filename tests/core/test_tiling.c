@@ -115,23 +115,17 @@ static void make_grid(zt_rng *g, grid *gr, int32_t X0, int32_t Y0, int32_t X1, i
     }
 }
 
-/* pixels_shaded: span mode writes every pixel of every row once; in zline mode
- * with no overlapping surfaces each covered pixel is shaded once, on top of
- * the background pass. */
+/* pixels_shaded: both modes write every pixel of every row once; in zline
+ * mode with no overlapping surfaces each covered pixel is depth-tested once. */
 static void check_shaded(const zs_stats *st, zs_visibility mode, unsigned long region,
                          const char *what)
 {
     unsigned long all = (unsigned long)W * H;
-    if (mode == ZS_MODE_SPAN) {
-        ZT_CHECK(st->pixels_shaded == all, "%s: span pixels_shaded %u != %lu", what,
-                 st->pixels_shaded, all);
-    } else {
-        /* the background pass writes every pixel, then each covered pixel
-         * passes the depth test exactly once (nothing overlaps) */
-        ZT_CHECK(st->pixels_shaded == all + region,
-                 "%s: zline pixels_shaded %u, expected %lu background + %lu covered", what,
-                 st->pixels_shaded, all, region);
-    }
+    ZT_CHECK(st->pixels_shaded == all, "%s: %s pixels_shaded %u != %lu", what,
+             mode == ZS_MODE_SPAN ? "span" : "zline", st->pixels_shaded, all);
+    if (mode == ZS_MODE_ZLINE)
+        ZT_CHECK(st->depth_evals == region, "%s: zline depth_evals %u, expected one per covered "
+                 "pixel (%lu)", what, st->depth_evals, region);
     ZT_CHECK(st->rows == H, "%s: rows %u != %d", what, st->rows, H);
 }
 

@@ -41,6 +41,7 @@ void zs_raster_begin(zs_renderer *r)
     r->priv.n_ael = 0;
     r->priv.n_sorted = 0;
     r->priv.steep = 0;
+    r->priv.background = zs_background_word(r); /* packed once a frame */
     reverse_buckets(r);
 }
 

@@ -247,7 +247,7 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
     c.width = r->cfg.width;
     c.min_cross = NO_CROSS;
     c.evals = 0;
-    c.background = zs_background_word(r);
+    c.background = r->priv.background;
     r->priv.n_set = 0;
     for (i = 0; i < n; i++) {
         const zs_edge *e = &c.edges[ael[i]];

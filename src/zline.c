@@ -13,7 +13,7 @@ static void write_runs(zs_renderer *r, const uint16_t *owner, uint8_t *row, int3
     const zs_active *act = r->priv.active;
     int32_t w = r->cfg.width, x = x0;
     unsigned bpp = r->priv.bpp;
-    uint32_t background = zs_background_word(r);
+    uint32_t background = r->priv.background;
     if (x0 > 0) {
         zs_fill_flat(row, 0, x0, bpp, background);
         r->stats.spans++;

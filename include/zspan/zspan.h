@@ -384,6 +384,7 @@ typedef struct zs_renderer_private {
     zs_fixed proj_sx, proj_sy;        /* clip-space x and y scale */
     int64_t depth_scale;              /* far / (far - near) in Q30, 0 if >= 8 */
     uint32_t tag_counter;
+    uint32_t background;              /* packed background pixel of the frame */
     int32_t next_row;
     uint16_t n_verts, n_tris, n_ael, n_sorted, n_edge_free, n_active_free, n_set;
     uint8_t state, mode, bpp;

@@ -36,6 +36,35 @@ static unsigned clz64(uint64_t v)
 #endif
 }
 
+uint32_t zs_recip61(uint32_t d)
+{
+    /* Long division of 2^62 by v = 2d (top bit set) in two base-2^16
+     * digits, each estimated from v's high half and corrected at most twice
+     * (the classic schoolbook bound): 32-bit divisions and products only,
+     * so no 64-bit division helper is called. */
+    uint32_t v = d << 1, vh = v >> 16, vl = v & 0xFFFFu;
+    uint32_t qh, ql, r, rem;
+    qh = (1u << 30) / vh; /* 2^62's high word is 2^30, its low word 0 */
+    r = (1u << 30) - qh * vh;
+    while (qh > 0xFFFFu || qh * vl > (r << 16)) {
+        qh--;
+        r += vh;
+        if (r > 0xFFFFu)
+            break;
+    }
+    /* the partial remainder 2^46 - qh * v is below v: mod 2^32 is exact */
+    rem = 0u - qh * v;
+    ql = rem / vh;
+    r = rem - ql * vh;
+    while (ql > 0xFFFFu || ql * vl > (r << 16)) {
+        ql--;
+        r += vh;
+        if (r > 0xFFFFu)
+            break;
+    }
+    return (qh << 16) + ql;
+}
+
 void zs_recip_init(zs_recip *rc, int64_t d)
 {
     uint64_t a = d < 0 ? (uint64_t)0 - (uint64_t)d : (uint64_t)d;

@@ -43,7 +43,7 @@ void zs_project(const zs_renderer *r, int64_t xc, int64_t yc, int32_t w, int16_t
     int64_t hw = 8 * (int64_t)r->cfg.width; /* half the width in 1/16 px */
     int64_t hh = 8 * (int64_t)r->cfg.height;
     unsigned s = norm_shift((uint32_t)w);
-    uint64_t inv = ((uint64_t)1 << 61) / ((uint32_t)w << s);
+    uint64_t inv = zs_recip61((uint32_t)w << s);
     int64_t nx = mul_floor_shift(xc, inv, 33u - s); /* xc / w in Q28 */
     int64_t ny = mul_floor_shift(yc, inv, 33u - s);
     int64_t q = (int64_t)(((uint64_t)r->cam.near_z * inv) >> (31u - s)); /* near / w, Q30 */

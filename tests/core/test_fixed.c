@@ -8,11 +8,15 @@
  *    libm on the exactly reduced angle; at multiples of 90 degrees within
  *    SIN_QUAD_TOL_LSB (1 LSB).
  *  - zs_isqrt64: exact floor: r*r <= v < (r+1)^2.
+ *  - zs_recip61 (the projection's reciprocal): floor(2^61 / d) equal to the
+ *    compiler's 64-bit division for every d in [2^30, 2^31) near the ends,
+ *    near powers of two and 16-bit digit boundaries, and 2M random ones.
  *  - zs_mat34_*: identity/translate/scale exact, mul and apply within 2 LSB of
  *    double math (exact saturation when the result leaves int32), rotations
  *    within the sine tolerance of the double rotation matrices.
  */
 #include "zt_test.h"
+#include "../../src/zs_internal.h" /* zs_recip61 */
 
 #include <math.h>
 #include <stdlib.h>
@@ -242,6 +246,33 @@ static void check_isqrt(uint64_t v)
         uint64_t n2 = ((uint64_t)r + 1) * ((uint64_t)r + 1);
         ZT_CHECK(n2 > v, "zs_isqrt64(%llu) = %u too small", (unsigned long long)v, r);
     }
+}
+
+static void check_recip61(uint32_t d)
+{
+    uint32_t want = (uint32_t)(((uint64_t)1 << 61) / d), got = zs_recip61(d);
+    ZT_CHECK(got == want, "zs_recip61(%lu) = %lu, 2^61 / d = %lu", (unsigned long)d,
+             (unsigned long)got, (unsigned long)want);
+}
+
+static void test_recip61(void **state)
+{
+    (void)state;
+    zt_rng g;
+    zt_rng_seed(&g, 0x2EC1B61000000001ull);
+    for (uint32_t k = 0; k < 70000; k++) {
+        check_recip61(0x40000000u + k);
+        check_recip61(0x7FFFFFFFu - k);
+    }
+    /* around every multiple of 2^16 (the divisor's digit split) and the
+     * divisors whose first quotient digit needs correcting */
+    for (uint32_t hi = 0x4000u; hi < 0x8000u; hi++)
+        for (uint32_t lo = 0; lo < 4; lo++) {
+            check_recip61((hi << 16) | lo);
+            check_recip61((hi << 16) | (0xFFFFu - lo));
+        }
+    for (int k = 0; k < 2000000; k++)
+        check_recip61(0x40000000u + zt_below(&g, 0x40000000u));
 }
 
 static void test_isqrt(void **state)
@@ -504,7 +535,7 @@ int main(void)
         cmocka_unit_test(test_mul),          cmocka_unit_test(test_div),
         cmocka_unit_test(test_sincos),       cmocka_unit_test(test_isqrt),
         cmocka_unit_test(test_mat_basic),    cmocka_unit_test(test_mat_mul_apply),
-        cmocka_unit_test(test_mat_rotate),
+        cmocka_unit_test(test_mat_rotate),   cmocka_unit_test(test_recip61),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     printf("test_fixed: seed %llx, %lu value checks, max sin/cos error %.2f LSB (tol %d, quadrants "

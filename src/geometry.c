@@ -84,6 +84,19 @@ static void model_view(draw_ctx *c)
     }
 }
 
+/* m * p for p in int16 range. Cortex-M0 has no 32x32->64 multiply: there
+ * it is two 32-bit products (|hi * p| <= 2^30, |lo * p| < 2^31) instead of
+ * a helper call; elsewhere one widening multiply. */
+static inline int64_t mul_32x16(int32_t m, int32_t p)
+{
+#if defined(__ARM_ARCH_6M__)
+    int32_t hi = zs_asr32(m, 16), lo = (int32_t)((uint32_t)m & 0xFFFFu);
+    return (int64_t)(hi * p) * 65536 + lo * p;
+#else
+    return (int64_t)m * p;
+#endif
+}
+
 /* Model-space vertex i to clip space (Q16.16, not saturated: clip
  * coordinates may pass 2^31 where a narrow field of view or a far vertex
  * magnifies eye coordinates; outcodes and the clipper take them whole). */
@@ -93,9 +106,9 @@ static void to_clip(const draw_ctx *c, uint32_t i, int64_t *xc, int64_t *yc, int
         const int16_t *pos = c->mesh->positions + 3u * i;
         int32_t px = pos[0], py = pos[1], pz = pos[2];
         const int32_t *m0 = c->clip[0], *m1 = c->clip[1], *m2 = c->clip[2];
-        int64_t sx = (int64_t)m0[0] * px + (int64_t)m0[1] * py + (int64_t)m0[2] * pz + 32768;
-        int64_t sy = (int64_t)m1[0] * px + (int64_t)m1[1] * py + (int64_t)m1[2] * pz + 32768;
-        int64_t sw = (int64_t)m2[0] * px + (int64_t)m2[1] * py + (int64_t)m2[2] * pz + 32768;
+        int64_t sx = mul_32x16(m0[0], px) + mul_32x16(m0[1], py) + mul_32x16(m0[2], pz) + 32768;
+        int64_t sy = mul_32x16(m1[0], px) + mul_32x16(m1[1], py) + mul_32x16(m1[2], pz) + 32768;
+        int64_t sw = mul_32x16(m2[0], px) + mul_32x16(m2[1], py) + mul_32x16(m2[2], pz) + 32768;
         *xc = zs_asr64(sx, 16) + c->clip_t[0];
         *yc = zs_asr64(sy, 16) + c->clip_t[1];
         *w = zs_asr64(sw, 16) + c->clip_t[2];
@@ -378,7 +391,10 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
 
     for (t = 0; t < m->triangle_count; t++) {
         uint16_t idx[3];
-        uint16_t tag = (uint16_t)(r->priv.tag_counter++ % 65535u + 1u);
+        uint16_t tag = r->priv.next_tag;
+        /* tags run 1 .. 65535 and start again at 1 (0 means no triangle) */
+        r->priv.next_tag = (uint16_t)(tag == 65535u ? 1u : tag + 1u);
+        r->priv.tag_counter++;
         const zs_vert *v0, *v1, *v2;
         int outcome;
         r->stats.tris_submitted++;

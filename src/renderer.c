@@ -145,6 +145,7 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
     r->priv.n_verts = 0;
     r->priv.n_tris = 0;
     r->priv.tag_counter = 0;
+    r->priv.next_tag = 1;
     r->priv.next_row = 0;
     memset(r->priv.buckets, 0xFF, (size_t)r->cfg.height * 2u);
     r->priv.state = ZS_STATE_OPEN;

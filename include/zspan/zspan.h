@@ -383,10 +383,11 @@ typedef struct zs_renderer_private {
     zs_vec3 light_dir[ZS_MAX_LIGHTS]; /* unit, Q16.16 */
     zs_fixed proj_sx, proj_sy;        /* clip-space x and y scale */
     int64_t depth_scale;              /* far / (far - near) in Q30, 0 if >= 8 */
-    uint32_t tag_counter;
+    uint32_t tag_counter;             /* triangles submitted this frame */
     uint32_t background;              /* packed background pixel of the frame */
     int32_t next_row;
     uint16_t n_verts, n_tris, n_ael, n_sorted, n_edge_free, n_active_free, n_set;
+    uint16_t next_tag;                /* tag of the next submitted triangle */
     uint8_t state, mode, bpp;
     uint8_t steep;                    /* a steep plane is active this frame */
     zs_setup_hook_fn setup_hook;

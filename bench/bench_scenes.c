@@ -2,6 +2,7 @@
 #include "bench_scenes.h"
 
 #include "bench_caps.h"
+#include "cluster.h"
 #include "cubes.h"
 #include "sphere285.h"
 #include "wuson.h"
@@ -10,6 +11,7 @@ const bench_scene bench_scenes[BENCH_SCENE_COUNT] = {
     {"sphere285", &bench_sphere285, ZS_FX(-3), 0, BENCH_CAPS_SPHERE285},
     {"cubes", &bench_cubes, ZS_FX(-8), ZS_FX(20), BENCH_CAPS_CUBES},
     {"wuson", &bench_wuson, ZS_FX(-3), 0, BENCH_CAPS_WUSON},
+    {"cluster", &bench_cluster, ZS_FX(-3), ZS_FX(20), BENCH_CAPS_CLUSTER},
 };
 
 zs_mat34 bench_model_view(const bench_scene *s, int frame)

@@ -1,5 +1,5 @@
 /*
- * The three standard benchmark scenes (freestanding C99: host and firmware).
+ * The standard benchmark scenes (freestanding C99: host and firmware).
  *
  * 240x240, RGB565 big-endian, flat unlit colours (one per triangle), back
  * faces culled, camera at the origin looking down -Z, vertical fov 60 degrees,
@@ -7,6 +7,9 @@
  *   sphere285  T(0,0,-3) * Ry(30 + 2f)            sphereWithHole.stl, normalised
  *   cubes      T(0,0,-8) * Rx(20) * Ry(30 + 2f)   64 unit cubes, 4x4x4, 1.5 apart
  *   wuson      T(0,0,-3) * Ry(30 + 2f)            WusonOBJ.obj, normalised
+ *   cluster    T(0,0,-3) * Rx(20) * Ry(30 + 2f)   40 interpenetrating spikes
+ *                                                 (bench/gen_cluster.c), normalised:
+ *                                                 depth work, many active edges
  *
  * Frame checksum: FNV-1a 32 over the RGB565 big-endian bytes of all rows in
  * order (offset basis 0x811C9DC5, prime 0x01000193).
@@ -19,7 +22,7 @@
 #define BENCH_W 240
 #define BENCH_H 240
 #define BENCH_FRAMES 10
-#define BENCH_SCENE_COUNT 3
+#define BENCH_SCENE_COUNT 4
 #define BENCH_FNV_BASIS 0x811C9DC5u
 
 typedef struct bench_scene {

@@ -29,7 +29,7 @@ MESHC_LIBS = $(shell $(PKG_CONFIG) --libs assimp 2>/dev/null || echo -lassimp) -
 FW_BUILD := $(BUILD)/fw
 BENCH_BUILD := $(BUILD)/bench
 BENCH_GEN := $(BENCH_BUILD)/gen
-BENCH_MESHES := sphere285 cubes wuson
+BENCH_MESHES := sphere285 cubes wuson cluster
 BENCH_GEN_SRCS := $(addprefix $(BENCH_GEN)/,$(addsuffix .c,$(BENCH_MESHES)))
 BENCH_GEN_HDRS := $(BENCH_GEN_SRCS:.c=.h)
 BENCH_HOST := $(BENCH_BUILD)/bench_host
@@ -90,6 +90,14 @@ $(BENCH_GEN)/cubes.obj: $(BENCH_BUILD)/gen_cubes
 	@mkdir -p $(@D)
 	$< > $@
 
+$(BENCH_BUILD)/gen_cluster: bench/gen_cluster.c | deps
+	@mkdir -p $(@D)
+	$(CC) -std=c99 -Wall -Wextra -Werror -O2 -o $@ $< -lm
+
+$(BENCH_GEN)/cluster.obj: $(BENCH_BUILD)/gen_cluster
+	@mkdir -p $(@D)
+	$< > $@
+
 # One colour per triangle (a fixed hash of its index); (a) and (c) normalised.
 $(BENCH_GEN)/sphere285.c: $(MESHC) | deps
 	@mkdir -p $(@D)
@@ -104,6 +112,10 @@ $(BENCH_GEN)/cubes.c: $(MESHC) $(BENCH_GEN)/cubes.obj
 	@mkdir -p $(@D)
 	$(MESHC) -q --quant-scale 8 --colors index -n bench_cubes -o $(basename $@) \
 	    $(BENCH_GEN)/cubes.obj
+$(BENCH_GEN)/cluster.c: $(MESHC) $(BENCH_GEN)/cluster.obj
+	@mkdir -p $(@D)
+	$(MESHC) -q --normalize --colors index -n bench_cluster -o $(basename $@) \
+	    $(BENCH_GEN)/cluster.obj
 $(BENCH_GEN_HDRS): %.h: %.c ;
 
 # Pool capacities: the largest use of a host run with generous pools.

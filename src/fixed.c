@@ -174,42 +174,21 @@ static int64_t mul_q30(int64_t a, int64_t b)
     return zs_asr64(a * b + ((int64_t)1 << 29), 30);
 }
 
-/* sin x and cos x for 0 <= x <= pi/4 (x in Q30), by their Taylor series. */
-static int64_t sin_small(int64_t x)
-{
-    int64_t x2 = mul_q30(x, x);
-    /* x (1 - x2/6 (1 - x2/20 (1 - x2/42 (1 - x2/72 (1 - x2/110))))) */
-    int64_t one = (int64_t)1 << 30;
-    int64_t t = one - x2 / 110;
-    t = one - mul_q30(x2, t) / 72;
-    t = one - mul_q30(x2, t) / 42;
-    t = one - mul_q30(x2, t) / 20;
-    t = one - mul_q30(x2, t) / 6;
-    return mul_q30(x, t);
-}
-
-static int64_t cos_small(int64_t x)
-{
-    int64_t x2 = mul_q30(x, x);
-    int64_t one = (int64_t)1 << 30;
-    int64_t t = one - x2 / 132;
-    t = one - mul_q30(x2, t) / 90;
-    t = one - mul_q30(x2, t) / 56;
-    t = one - mul_q30(x2, t) / 30;
-    t = one - mul_q30(x2, t) / 12;
-    t = one - mul_q30(x2, t) / 2;
-    return t;
-}
+/* Taylor series of sin x / x and cos x for 0 <= x <= pi/4, in Horner form:
+ * 1 - x2/6 (1 - x2/20 (1 - ...)), innermost divisor first, 0 ends a list. */
+static const uint8_t taylor_div[2][7] = {{110, 72, 42, 20, 6, 0}, {132, 90, 56, 30, 12, 2, 0}};
 
 int32_t zs_sin_q30(zs_fixed deg)
 {
-    const int64_t full = (int64_t)360 * 65536;
-    const int64_t quarter = (int64_t)90 * 65536;
+    const int32_t full = 360 * 65536;
+    const int32_t quarter = 90 * 65536;
     /* pi / 180 in Q40, so degrees Q16 * this >> 26 is radians Q30 */
     const int64_t rad_per_deg_q40 = 19190098281LL;
-    int64_t a = (int64_t)deg % full;
-    int neg = 0;
-    int64_t x, s;
+    const int64_t one = (int64_t)1 << 30;
+    int32_t a = deg % full;
+    int neg = 0, use_cos;
+    const uint8_t *d;
+    int64_t x, x2, t = one;
     if (a < 0)
         a += full;
     if (a >= full / 2) { /* sin(a) = -sin(a - 180) */
@@ -218,19 +197,23 @@ int32_t zs_sin_q30(zs_fixed deg)
     }
     if (a > quarter) /* sin(a) = sin(180 - a) */
         a = full / 2 - a;
-    /* now 0 <= a <= 90 degrees */
-    if (a <= quarter / 2) {
-        x = zs_asr64(a * rad_per_deg_q40 + ((int64_t)1 << 25), 26);
-        s = sin_small(x);
-    } else {
-        x = zs_asr64((quarter - a) * rad_per_deg_q40 + ((int64_t)1 << 25), 26);
-        s = cos_small(x);
-    }
-    if (s > ((int64_t)1 << 30))
-        s = (int64_t)1 << 30;
-    if (s < 0)
-        s = 0;
-    return (int32_t)(neg ? -s : s);
+    /* now 0 <= a <= 90 degrees; beyond 45 it is cos(90 - a) */
+    use_cos = a > quarter / 2;
+    if (use_cos)
+        a = quarter - a;
+    x = zs_asr64(a * rad_per_deg_q40 + ((int64_t)1 << 25), 26);
+    x2 = mul_q30(x, x);
+    /* x2, t <= 2^30 keep each product's quotient below 2^31: a 32-bit
+     * division gives the same (non-negative) quotient */
+    for (d = taylor_div[use_cos]; *d; d++)
+        t = one - (int64_t)((uint32_t)mul_q30(x2, t) / *d);
+    if (!use_cos)
+        t = mul_q30(x, t);
+    if (t > one)
+        t = one;
+    if (t < 0)
+        t = 0;
+    return (int32_t)(neg ? -t : t);
 }
 
 zs_fixed zs_fx_sin_deg(zs_fixed deg)

@@ -286,12 +286,12 @@ int64_t zs_dot3_q16(const int32_t a[3], const int32_t b[3])
     return hi + zs_asr64(lo + 32768, 16);
 }
 
+const zs_mat34 zs_identity34 = {
+    {{ZS_FX_ONE, 0, 0, 0}, {0, ZS_FX_ONE, 0, 0}, {0, 0, ZS_FX_ONE, 0}}};
+
 zs_mat34 zs_mat34_identity(void)
 {
-    zs_mat34 m;
-    memset(&m, 0, sizeof m);
-    m.m[0][0] = m.m[1][1] = m.m[2][2] = ZS_FX_ONE;
-    return m;
+    return zs_identity34;
 }
 
 zs_mat34 zs_mat34_mul(const zs_mat34 *a, const zs_mat34 *b)

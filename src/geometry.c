@@ -11,19 +11,21 @@
  * limits; they are clamped so that the clip transform cannot overflow. */
 #define EYE_LIMIT ((int64_t)1 << 46)
 
+/* Lives in zs_draw's frame, under every call of the geometry stage: kept
+ * small (no copy of the model matrix, no unused translation column). */
 typedef struct draw_ctx {
     zs_renderer *r;
     const zs_mesh *mesh;
-    zs_mat34 model;     /* model -> world, for normals */
-    zs_mat34 mv;        /* model -> eye; its translation column is unused */
-    int64_t mv_t[3];    /* model -> eye translation, Q16, unsaturated */
-    int lit;            /* lighting changes colours */
-    int vertex_light;   /* lighting per vertex (Gouraud with vertex normals) */
-    int vertex_color;   /* Gouraud with per-vertex colours */
+    const zs_mat34 *model; /* model -> world, for normals (the caller's) */
+    uint8_t fast;          /* the folded rows below fit 32 bits */
+    uint8_t lit;           /* lighting changes colours */
+    uint8_t vertex_light;  /* lighting per vertex (Gouraud with vertex normals) */
+    uint8_t vertex_color;  /* Gouraud with per-vertex colours */
     uint32_t tri_flags;
-    int fast;           /* the folded rows below fit 32 bits */
-    int32_t clip[3][3]; /* int16 position -> xc, yc, w, Q32 (scale and projection folded in) */
-    int64_t clip_t[3];  /* the translations, Q16 */
+    int32_t clip[3][3];    /* int16 position -> xc, yc, w, Q32 (scale and projection folded in) */
+    int64_t clip_t[3];     /* the translations, Q16 */
+    int64_t mv_t[3];       /* model -> eye translation, Q16, unsaturated */
+    int32_t mv[3][3];      /* model -> eye, the 3x3 part */
 } draw_ctx;
 
 static int64_t abs64(int64_t v)
@@ -43,7 +45,7 @@ static void prepare_clip_rows(draw_ctx *c)
     c->fast = abs64(c->mesh->scale) < ((int64_t)1 << 30);
     for (k = 0; k < 3 && c->fast; k++) {
         for (j = 0; j < 3; j++) {
-            int64_t m = zs_asr64((int64_t)c->mv.m[k][j] * proj[k] + 32768, 16) * sign[k];
+            int64_t m = zs_asr64((int64_t)c->mv[k][j] * proj[k] + 32768, 16) * sign[k];
             if (abs64(m) >= ((int64_t)1 << 31) || abs64(m * c->mesh->scale) >= INT32_MAX) {
                 c->fast = 0;
                 break;
@@ -65,22 +67,21 @@ static int32_t sat_count(zs_renderer *r, int64_t v)
  * 32768 units apart. */
 static void model_view(draw_ctx *c)
 {
-    const zs_mat34 *v = &c->r->cam.view, *m = &c->model;
+    const zs_mat34 *v = &c->r->cam.view, *m = c->model;
     int k, j;
     for (k = 0; k < 3; k++) {
-        int32_t t[3];
-        for (j = 0; j < 3; j++) {
+        for (j = 0; j < 4; j++) { /* column j of the model */
             int32_t col[3];
+            int64_t s;
             col[0] = m->m[0][j];
             col[1] = m->m[1][j];
             col[2] = m->m[2][j];
-            c->mv.m[k][j] = sat_count(c->r, zs_dot3_q16(v->m[k], col));
+            s = zs_dot3_q16(v->m[k], col);
+            if (j < 3)
+                c->mv[k][j] = sat_count(c->r, s);
+            else
+                c->mv_t[k] = s + v->m[k][3];
         }
-        t[0] = m->m[0][3];
-        t[1] = m->m[1][3];
-        t[2] = m->m[2][3];
-        c->mv.m[k][3] = 0;
-        c->mv_t[k] = zs_dot3_q16(v->m[k], t) + v->m[k][3];
     }
 }
 
@@ -110,7 +111,7 @@ static void to_clip(const draw_ctx *c, uint32_t i, int64_t *xc, int64_t *yc, int
         for (k = 0; k < 3; k++) {
             /* within the limits |e| < 2^34; beyond them clamp (counted) so
              * that the products below stay defined */
-            e[k] = zs_dot3_q16(c->mv.m[k], p) + c->mv_t[k];
+            e[k] = zs_dot3_q16(c->mv[k], p) + c->mv_t[k];
             if (e[k] > EYE_LIMIT || e[k] < -EYE_LIMIT) {
                 r->stats.saturated++;
                 e[k] = e[k] > 0 ? EYE_LIMIT : -EYE_LIMIT;
@@ -138,7 +139,7 @@ static zs_fixed light_intensity(const draw_ctx *c, const int64_t n_model[3])
     nm[1] = (int32_t)n[1];
     nm[2] = (int32_t)n[2];
     for (k = 0; k < 3; k++) /* the model's 3x3 takes normals to world space */
-        n[k] = zs_dot3_q16(c->model.m[k], nm);
+        n[k] = zs_dot3_q16(c->model->m[k], nm);
     if (zs_normalize3(n, unit)) {
         for (k = 0; k < r->shade.light_count; k++) {
             int32_t l[3];
@@ -195,9 +196,10 @@ static uint32_t average3(uint32_t a, uint32_t b, uint32_t c)
 }
 
 /* Face colour with flags, lit per face when lighting is not per vertex. */
-static uint32_t face_color(const draw_ctx *c, uint32_t t, const uint16_t idx[3])
+static uint32_t face_color(const draw_ctx *c, uint32_t t)
 {
     const zs_mesh *m = c->mesh;
+    const uint16_t *idx = m->indices + 3u * t;
     uint32_t col;
     if (c->vertex_color)
         col = WHITE;
@@ -257,6 +259,12 @@ static void count_outcome(zs_stats *s, int outcome)
     }
 }
 
+/* The tag of the triangle drawn as number n of the frame: 1..65535. */
+static uint16_t tag_of(uint32_t tag0, uint32_t t)
+{
+    return (uint16_t)((tag0 + t) % 65535u + 1u);
+}
+
 /* Is a before b in lexicographic order of (w, yc, xc)? */
 static int svert_before(const zs_svert *a, const zs_svert *b)
 {
@@ -273,9 +281,9 @@ static int first_vertex(const zs_svert in[3])
     return svert_before(&in[2], &in[k]) ? 2 : k;
 }
 
-/* A triangle with a vertex outside near/far/guard: reject or clip it. */
-static int clip_and_setup(draw_ctx *c, uint16_t base, const uint16_t idx[3], uint32_t t,
-                          uint16_t tag)
+/* Triangle t with a vertex outside near/far/guard: reject or clip it. It
+ * reads its indices itself, so the caller's stay in registers. */
+static ZS_COLD int clip_and_setup(draw_ctx *c, uint16_t base, uint32_t t, uint16_t tag)
 {
     zs_renderer *r = c->r;
     zs_vert *pool = r->priv.verts;
@@ -283,6 +291,7 @@ static int clip_and_setup(draw_ctx *c, uint16_t base, const uint16_t idx[3], uin
     unsigned and_codes = 0xFFu;
     int n, k, outcome = ZS_SETUP_REJECTED;
     uint32_t color;
+    const uint16_t *idx = c->mesh->indices + 3u * t;
     for (k = 0; k < 3; k++) {
         const zs_vert *pv = &pool[base + idx[k]];
         to_clip(c, idx[k], &v[k].xc, &v[k].yc, &v[k].w);
@@ -311,7 +320,7 @@ static int clip_and_setup(draw_ctx *c, uint16_t base, const uint16_t idx[3], uin
     n = zs_clip_polygon(r, v, 3, v);
     if (n < 3)
         return ZS_SETUP_REJECTED;
-    color = face_color(c, t, idx);
+    color = face_color(c, t);
     for (k = 0; k < n; k++)
         if (v[k].pool == ZS_NONE)
             v[k].pool = zs_project_vertex(r, v[k].xc, v[k].yc, (int32_t)v[k].w, v[k].shade);
@@ -333,7 +342,7 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
 {
     draw_ctx c;
     zs_vert *pool;
-    uint32_t i, t, vfit, room;
+    uint32_t i, t, vfit, room, tag0;
     uint16_t base;
     if (!r || !m)
         return ZS_ERR_NULL;
@@ -346,12 +355,13 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
             return ZS_ERR_INDEX;
     c.r = r;
     c.mesh = m;
-    c.model = model ? *model : zs_mat34_identity();
+    c.model = model ? model : &zs_identity34;
     model_view(&c);
     prepare_clip_rows(&c);
-    c.lit = r->shade.light_count > 0 || r->shade.ambient != ZS_FX_ONE;
-    c.vertex_light = r->shade.shading == ZS_SHADE_GOURAUD && c.lit && m->vertex_normals != 0;
-    c.vertex_color = r->shade.shading == ZS_SHADE_GOURAUD && m->vertex_colors != 0;
+    c.lit = (uint8_t)(r->shade.light_count > 0 || r->shade.ambient != ZS_FX_ONE);
+    c.vertex_light =
+        (uint8_t)(r->shade.shading == ZS_SHADE_GOURAUD && c.lit && m->vertex_normals != 0);
+    c.vertex_color = (uint8_t)(r->shade.shading == ZS_SHADE_GOURAUD && m->vertex_colors != 0);
     c.tri_flags = ((c.vertex_light || c.vertex_color) ? ZS_TRI_MODULATE : 0u) |
                   (r->shade.fog.enabled ? ZS_TRI_FOG : 0u);
 
@@ -376,32 +386,33 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     r->priv.n_verts = (uint16_t)(base + vfit);
     r->stats.verts_stored = r->priv.n_verts;
 
+    /* triangle t takes tag number tag0 + t (wrapping like the counter), so
+     * only the triangles that reach setup compute their tag */
+    tag0 = r->priv.tag_counter;
+    r->priv.tag_counter += m->triangle_count;
     for (t = 0; t < m->triangle_count; t++) {
-        uint16_t idx[3];
-        uint16_t tag = (uint16_t)(r->priv.tag_counter++ % 65535u + 1u);
+        const uint16_t *idx = m->indices + 3u * t;
+        uint32_t i0 = idx[0], i1 = idx[1], i2 = idx[2];
         const zs_vert *v0, *v1, *v2;
         int outcome;
         r->stats.tris_submitted++;
-        idx[0] = m->indices[3u * t];
-        idx[1] = m->indices[3u * t + 1u];
-        idx[2] = m->indices[3u * t + 2u];
-        if (idx[0] >= vfit || idx[1] >= vfit || idx[2] >= vfit) {
+        if (i0 >= vfit || i1 >= vfit || i2 >= vfit) {
             r->stats.tris_dropped++;
             continue;
         }
-        v0 = &pool[base + idx[0]];
-        v1 = &pool[base + idx[1]];
-        v2 = &pool[base + idx[2]];
+        v0 = &pool[base + i0];
+        v1 = &pool[base + i1];
+        v2 = &pool[base + i2];
         if ((v0->z | v1->z | v2->z) & ZS_VERT_UNPROJECTED) {
-            outcome = clip_and_setup(&c, base, idx, t, tag);
+            outcome = clip_and_setup(&c, base, t, tag_of(tag0, t));
         } else {
             int64_t area2 = zs_area2(v0, v1, v2);
             if (area2 >= 0) /* culled before lighting the face */
                 outcome = ZS_SETUP_CULLED;
             else
-                outcome = zs_setup_triangle(r, (uint16_t)(base + idx[0]),
-                                            (uint16_t)(base + idx[1]), (uint16_t)(base + idx[2]),
-                                            area2, face_color(&c, t, idx), tag);
+                outcome = zs_setup_triangle(r, (uint16_t)(base + i0), (uint16_t)(base + i1),
+                                            (uint16_t)(base + i2), area2, face_color(&c, t),
+                                            tag_of(tag0, t));
         }
         count_outcome(&r->stats, outcome);
     }

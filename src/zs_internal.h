@@ -86,12 +86,22 @@ typedef char zs_check_edge[(sizeof(zs_edge) == ZS_EDGE_BYTES) ? 1 : -1];
 typedef char zs_check_active[(sizeof(zs_active) == ZS_ACTIVE_BYTES) ? 1 : -1];
 typedef char zs_check_acolor[(sizeof(zs_active_color) == ZS_ACTIVE_COLOR_BYTES) ? 1 : -1];
 
+/* Paths that real frames seldom take (clipping, needles, lighting set-up):
+ * kept out of line and built for size, so the hot code around them stays
+ * small and its stack frames do not carry their locals. */
+#if defined(__GNUC__)
+#define ZS_COLD __attribute__((cold, noinline))
+#else
+#define ZS_COLD
+#endif
+
 /* ---- integer helpers (fixed.c) ---- */
 static inline int32_t zs_asr32(int32_t v, unsigned s);
 int64_t zs_floor_div64(int64_t a, int64_t b);       /* b > 0 */
 int64_t zs_round_div64(int64_t a, int64_t b);       /* b > 0, half up */
 
 int32_t zs_sin_q30(zs_fixed deg);                   /* sine, Q2.30 */
+extern const zs_mat34 zs_identity34;                /* zs_mat34_identity() */
 /* A divisor prepared for repeated divisions: one hardware-free 64/32 division
  * instead of one per quotient (plane gradients share their triangle's area). */
 typedef struct zs_recip {

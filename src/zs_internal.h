@@ -174,7 +174,7 @@ unsigned zs_outcode(const zs_renderer *r, int64_t xc, int64_t yc, int64_t w);
 int zs_activate(zs_renderer *r, uint16_t tri, int32_t y);
 /* Sets the row constant of a steep plane exactly: the true depth at the
  * centre of column xa on row y when the triangle covers it (xa: its first
- * covered column there, clamped to the screen). */
+ * covered column there, clamped to the screen; 0 <= y <= height). */
 void zs_anchor_depth(const zs_renderer *r, zs_active *a, int32_t xa, int32_t y);
 /* Appends the lower short edge of active triangle ai, starting at row y. */
 void zs_continue_edge(zs_renderer *r, uint16_t ai, int32_t y);

@@ -3,24 +3,6 @@
  * input can overflow (signed overflow is undefined behaviour in C). */
 #include "zs_internal.h"
 
-int64_t zs_floor_div64(int64_t a, int64_t b)
-{
-    int64_t q = a / b;
-    if ((a % b != 0) && ((a < 0) != (b < 0)))
-        q--;
-    return q;
-}
-
-int64_t zs_round_div64(int64_t a, int64_t b)
-{
-    /* floor((a + b/2) / b) without forming a + b/2 when it could overflow */
-    int64_t q = zs_floor_div64(a, b);
-    int64_t rem = a - q * b; /* 0 <= rem < b */
-    if (rem >= b - rem)
-        q++;
-    return q;
-}
-
 /* Leading zeros of a non-zero 64-bit value. */
 static unsigned clz64(uint64_t v)
 {
@@ -90,30 +72,23 @@ static void mul_64x64(uint64_t a, uint64_t b, uint64_t *hi, uint64_t *lo)
 int64_t zs_muldiv64(int64_t a, int64_t b, int64_t c, int round)
 {
     uint64_t ua = a < 0 ? (uint64_t)0 - (uint64_t)a : (uint64_t)a;
-    uint64_t ub = (uint64_t)b, uc = (uint64_t)c, q, rem;
-    if (ua < ((uint64_t)1 << 31) && ub < ((uint64_t)1 << 32)) {
-        uint64_t p = ua * ub; /* below 2^63: the common case, one division */
-        q = p / uc;
-        rem = p - q * uc;
+    uint64_t uc = (uint64_t)c, hi, lo, q, rem;
+    int i;
+    mul_64x64(ua, (uint64_t)b, &hi, &lo);
+    if (hi == 0) { /* the common case: one division */
+        q = lo / uc;
+        rem = lo - q * uc;
     } else {
-        uint64_t hi, lo;
-        int i;
-        mul_64x64(ua, ub, &hi, &lo);
-        if (hi == 0) {
-            q = lo / uc;
-            rem = lo - q * uc;
-        } else {
-            /* b <= c keeps the quotient below 2^63, so hi < c: long
-             * division by bits, the remainder staying below 2c < 2^64 */
-            q = 0;
-            rem = hi;
-            for (i = 63; i >= 0; i--) {
-                rem = (rem << 1) | ((lo >> i) & 1u);
-                q <<= 1;
-                if (rem >= uc) {
-                    rem -= uc;
-                    q |= 1u;
-                }
+        /* b <= c keeps the quotient below 2^63, so hi < c: long division
+         * by bits, the remainder staying below 2c < 2^64 */
+        q = 0;
+        rem = hi;
+        for (i = 63; i >= 0; i--) {
+            rem = (rem << 1) | ((lo >> i) & 1u);
+            q <<= 1;
+            if (rem >= uc) {
+                rem -= uc;
+                q |= 1u;
             }
         }
     }
@@ -218,59 +193,72 @@ int32_t zs_sin_q30(zs_fixed deg)
 
 zs_fixed zs_fx_sin_deg(zs_fixed deg)
 {
-    return (zs_fixed)zs_asr64((int64_t)zs_sin_q30(deg) + 8192, 14);
+    return zs_asr32(zs_sin_q30(deg) + 8192, 14); /* |sin| <= 2^30: no overflow */
 }
 
 zs_fixed zs_fx_cos_deg(zs_fixed deg)
 {
     /* cos(a) = sin(a + 90); reduce first so the addition cannot overflow */
-    int64_t a = (int64_t)deg % ((int64_t)360 * 65536) + (int64_t)90 * 65536;
-    return (zs_fixed)zs_asr64((int64_t)zs_sin_q30((zs_fixed)a) + 8192, 14);
+    return zs_fx_sin_deg(deg % (360 * 65536) + 90 * 65536);
 }
 
-static int64_t abs64(int64_t v)
+/* The largest |v[i]| (callers' components are far from INT64_MIN). */
+static int64_t max_abs3(const int64_t v[3])
 {
-    return v < 0 ? -v : v;
+    int64_t m = 0;
+    int i;
+    for (i = 0; i < 3; i++) {
+        int64_t a = v[i] < 0 ? -v[i] : v[i];
+        if (a > m)
+            m = a;
+    }
+    return m;
 }
 
 void zs_shrink3(int64_t v[3], int64_t limit)
 {
-    while (abs64(v[0]) >= limit || abs64(v[1]) >= limit || abs64(v[2]) >= limit) {
-        v[0] /= 2;
-        v[1] /= 2;
-        v[2] /= 2;
-    }
+    int i;
+    while (max_abs3(v) >= limit)
+        for (i = 0; i < 3; i++)
+            v[i] /= 2;
 }
 
 int zs_normalize3(const int64_t v[3], int32_t out[3])
 {
-    int64_t t[3];
-    uint64_t len2;
+    int64_t t[3], m;
+    uint64_t len2 = 0;
     uint32_t len;
     int i;
-    t[0] = v[0];
-    t[1] = v[1];
-    t[2] = v[2];
+    for (i = 0; i < 3; i++)
+        t[i] = v[i];
     /* keep components below 2^30 so the squares sum below 2^62 */
     zs_shrink3(t, (int64_t)1 << 30);
     /* and above 2^20 where possible, for precision */
-    while (t[0] != 0 || t[1] != 0 || t[2] != 0) {
-        if (abs64(t[0]) >= ((int64_t)1 << 20) || abs64(t[1]) >= ((int64_t)1 << 20) ||
-            abs64(t[2]) >= ((int64_t)1 << 20))
-            break;
-        t[0] *= 2;
-        t[1] *= 2;
-        t[2] *= 2;
-    }
-    len2 = (uint64_t)(t[0] * t[0]) + (uint64_t)(t[1] * t[1]) + (uint64_t)(t[2] * t[2]);
-    len = zs_isqrt64(len2);
-    if (len == 0) {
-        out[0] = out[1] = out[2] = 0;
-        return 0;
-    }
+    while ((m = max_abs3(t)) != 0 && m < ((int64_t)1 << 20))
+        for (i = 0; i < 3; i++)
+            t[i] *= 2;
     for (i = 0; i < 3; i++)
-        out[i] = (int32_t)zs_round_div64(t[i] * 65536, (int64_t)len);
-    return 1;
+        len2 += (uint64_t)(t[i] * t[i]);
+    len = zs_isqrt64(len2);
+    for (i = 0; i < 3; i++) {
+        /* round(t * 65536 / len), halves up: floor division, then the
+         * remainder against the rest of the divisor (no overflow) */
+        int64_t a = t[i] * 65536, q, rem;
+        if (len == 0) {
+            out[i] = 0;
+            continue;
+        }
+        q = a / len;
+        rem = a % len;
+        if (rem < 0) {
+            q--;
+            rem += len;
+        }
+        if (rem >= (int64_t)len - rem)
+            q++;
+        out[i] = (int32_t)q;
+    }
+    return len != 0;
 }
 
 int64_t zs_dot3_q16(const int32_t a[3], const int32_t b[3])

@@ -97,8 +97,6 @@ typedef char zs_check_acolor[(sizeof(zs_active_color) == ZS_ACTIVE_COLOR_BYTES) 
 
 /* ---- integer helpers (fixed.c) ---- */
 static inline int32_t zs_asr32(int32_t v, unsigned s);
-int64_t zs_floor_div64(int64_t a, int64_t b);       /* b > 0 */
-int64_t zs_round_div64(int64_t a, int64_t b);       /* b > 0, half up */
 
 int32_t zs_sin_q30(zs_fixed deg);                   /* sine, Q2.30 */
 extern const zs_mat34 zs_identity34;                /* zs_mat34_identity() */

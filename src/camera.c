@@ -1,16 +1,6 @@
 /* Camera: look-at view transform and perspective parameters. */
 #include "zs_internal.h"
 
-/* out = a x b (Q32 from Q16 inputs). */
-static void cross3(const int32_t a[3], const int32_t b[3], int64_t out[3])
-{
-    int k;
-    for (k = 0; k < 3; k++) {
-        int k1 = k == 2 ? 0 : k + 1, k2 = k == 0 ? 2 : k - 1;
-        out[k] = (int64_t)a[k1] * b[k2] - (int64_t)a[k2] * b[k1];
-    }
-}
-
 zs_status zs_camera_look_at(zs_camera *cam, zs_vec3 eye, zs_vec3 target, zs_vec3 up)
 {
     int64_t d[3], u64[3], s64[3];
@@ -30,7 +20,7 @@ zs_status zs_camera_look_at(zs_camera *cam, zs_vec3 eye, zs_vec3 target, zs_vec3
     u64[2] = up.z;
     if (!zs_normalize3(d, f) || !zs_normalize3(u64, upn))
         return ZS_ERR_CAMERA;
-    cross3(f, upn, s64); /* side = forward x up (Q32) */
+    zs_cross3(f, upn, s64); /* side = forward x up (Q32) */
     /* up within ~0.001 rad of the view direction is degenerate */
     for (i = 0; i < 3; i++)
         d[i] = s64[i];
@@ -43,7 +33,7 @@ zs_status zs_camera_look_at(zs_camera *cam, zs_vec3 eye, zs_vec3 target, zs_vec3
         return ZS_ERR_CAMERA;
     if (!zs_normalize3(s64, row[0]))
         return ZS_ERR_CAMERA;
-    cross3(row[0], f, u64); /* true up = side x forward */
+    zs_cross3(row[0], f, u64); /* true up = side x forward */
     if (!zs_normalize3(u64, row[1]))
         return ZS_ERR_CAMERA;
     for (i = 0; i < 3; i++)

@@ -261,6 +261,15 @@ int zs_normalize3(const int64_t v[3], int32_t out[3])
     return len != 0;
 }
 
+void zs_cross3(const int32_t a[3], const int32_t b[3], int64_t out[3])
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        int k1 = k == 2 ? 0 : k + 1, k2 = k == 0 ? 2 : k - 1;
+        out[k] = (int64_t)a[k1] * b[k2] - (int64_t)a[k2] * b[k1];
+    }
+}
+
 int64_t zs_dot3_q16(const int32_t a[3], const int32_t b[3])
 {
     int64_t hi = 0, lo = 0;

@@ -221,20 +221,16 @@ static uint32_t face_color(const draw_ctx *c, uint32_t t)
             const int16_t *p0 = m->positions + 3u * idx[0];
             const int16_t *p1 = m->positions + 3u * idx[1];
             const int16_t *p2 = m->positions + 3u * idx[2];
-            int64_t a[3], b[3];
+            int32_t a[3], b[3]; /* int16 differences */
             int k;
             for (k = 0; k < 3; k++) {
-                a[k] = (int64_t)p1[k] - p0[k];
-                b[k] = (int64_t)p2[k] - p0[k];
+                a[k] = p1[k] - p0[k];
+                b[k] = p2[k] - p0[k];
             }
-            n[0] = a[1] * b[2] - a[2] * b[1];
-            n[1] = a[2] * b[0] - a[0] * b[2];
-            n[2] = a[0] * b[1] - a[1] * b[0];
-            if (m->scale < 0) { /* a mirrored mesh turns its normals */
-                n[0] = -n[0];
-                n[1] = -n[1];
-                n[2] = -n[2];
-            }
+            zs_cross3(a, b, n);
+            if (m->scale < 0) /* a mirrored mesh turns its normals */
+                for (k = 0; k < 3; k++)
+                    n[k] = -n[k];
         }
         col = zs_light_color(col, light_intensity(c, n));
     }

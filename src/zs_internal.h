@@ -117,6 +117,8 @@ int64_t zs_mul_q16_wide(int64_t a, int32_t b);
  * toward zero, or rounded half away from zero when round is non-zero.
  * Exact through a 128-bit product where a * b does not fit 64 bits. */
 int64_t zs_muldiv64(int64_t a, int64_t b, int64_t c, int round);
+/* out = a x b, exact (each product in 64 bits). */
+void zs_cross3(const int32_t a[3], const int32_t b[3], int64_t out[3]);
 /* round(sum a[i] * b[i] / 65536) without overflow for any int32 inputs. */
 int64_t zs_dot3_q16(const int32_t a[3], const int32_t b[3]);
 /* Shrink a vector by powers of two until every |component| < limit. */

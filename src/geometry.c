@@ -39,20 +39,20 @@ static int64_t abs64(int64_t v)
 static void prepare_clip_rows(draw_ctx *c)
 {
     const zs_renderer *r = c->r;
-    const int64_t sign[3] = {1, 1, -1}; /* w = -z_eye */
-    const int32_t proj[3] = {r->priv.proj_sx, r->priv.proj_sy, 65536};
+    /* w = -z_eye: the third row's factor -1.0 negates exactly */
+    const int32_t proj[3] = {r->priv.proj_sx, r->priv.proj_sy, -65536};
     int k, j;
     c->fast = abs64(c->mesh->scale) < ((int64_t)1 << 30);
     for (k = 0; k < 3 && c->fast; k++) {
         for (j = 0; j < 3; j++) {
-            int64_t m = zs_asr64((int64_t)c->mv[k][j] * proj[k] + 32768, 16) * sign[k];
+            int64_t m = zs_asr64((int64_t)c->mv[k][j] * proj[k] + 32768, 16);
             if (abs64(m) >= ((int64_t)1 << 31) || abs64(m * c->mesh->scale) >= INT32_MAX) {
                 c->fast = 0;
                 break;
             }
             c->clip[k][j] = (int32_t)(m * c->mesh->scale);
         }
-        c->clip_t[k] = zs_mul_q16_wide(c->mv_t[k], proj[k]) * sign[k];
+        c->clip_t[k] = zs_mul_q16_wide(c->mv_t[k], proj[k]);
     }
 }
 

@@ -311,7 +311,8 @@ static inline void zs_fill2(uint8_t *p, int n, uint8_t b0, uint8_t b1)
     }
 }
 
-static inline void zs_fill_flat(uint8_t *row, int x0, int x1, unsigned bpp, uint32_t pixel)
+static inline void zs_fill_flat_body(uint8_t *row, int x0, int x1, unsigned bpp,
+                                     uint32_t pixel)
 {
     union {
         uint32_t w;
@@ -333,6 +334,17 @@ static inline void zs_fill_flat(uint8_t *row, int x0, int x1, unsigned bpp, uint
         }
     }
 }
+
+/* Pixels x0 .. x1-1 of row set to a packed pixel. Built for size, one copy
+ * out of line (format.c) serves both visibility modes; else inline. */
+#if defined(__OPTIMIZE_SIZE__)
+void zs_fill_flat(uint8_t *row, int x0, int x1, unsigned bpp, uint32_t pixel);
+#else
+static inline void zs_fill_flat(uint8_t *row, int x0, int x1, unsigned bpp, uint32_t pixel)
+{
+    zs_fill_flat_body(row, x0, x1, bpp, pixel);
+}
+#endif
 
 
 #endif

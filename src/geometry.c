@@ -123,17 +123,14 @@ static void to_clip(const draw_ctx *c, uint32_t i, int64_t *xc, int64_t *yc, int
     }
 }
 
-/* Light intensity (Q16.16) for a model-space normal direction n. */
-static zs_fixed light_intensity(const draw_ctx *c, const int64_t n_model[3])
+/* Light intensity (Q16.16) for a model-space normal direction n (the
+ * caller's scratch: changed). */
+static zs_fixed light_intensity(const draw_ctx *c, int64_t n[3])
 {
     const zs_renderer *r = c->r;
-    int64_t n[3];
     int32_t nm[3], unit[3];
     int64_t total = r->shade.ambient;
     int k;
-    n[0] = n_model[0];
-    n[1] = n_model[1];
-    n[2] = n_model[2];
     zs_shrink3(n, (int64_t)1 << 24);
     nm[0] = (int32_t)n[0];
     nm[1] = (int32_t)n[1];
@@ -240,7 +237,7 @@ static uint32_t face_color(const draw_ctx *c, uint32_t t)
 /* Outcome priority when pieces of one clipped triangle end differently. */
 static int merge_outcome(int have, int piece)
 {
-    static const int rank[5] = {4, 1, 2, 0, 3}; /* stored > dropped > empty > culled > rejected */
+    static const uint8_t rank[5] = {4, 1, 2, 0, 3}; /* stored > dropped > empty > culled > rejected */
     return rank[piece] > rank[have] ? piece : have;
 }
 

@@ -298,17 +298,11 @@ static ZS_COLD int clip_and_setup(draw_ctx *c, uint16_t base, uint32_t t, uint16
     /* start from a canonical vertex: the same triangle with its vertices
      * rotated is then cut into the same pieces (equal planes, so exact ties
      * still go to the earlier triangle) */
-    k = first_vertex(v);
-    if (k == 1) {
-        zs_svert tmp = v[0];
+    for (k = first_vertex(v); k > 0; k--) { /* rotate left k times */
+        v[3] = v[0];
         v[0] = v[1];
         v[1] = v[2];
-        v[2] = tmp;
-    } else if (k == 2) {
-        zs_svert tmp = v[2];
-        v[2] = v[1];
-        v[1] = v[0];
-        v[0] = tmp;
+        v[2] = v[3];
     }
     n = zs_clip_polygon(r, v, 3, v);
     if (n < 3)

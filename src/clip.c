@@ -25,6 +25,11 @@ unsigned zs_outcode(const zs_renderer *r, int64_t xc, int64_t yc, int64_t w)
 
 /* Clip coordinate k: w (k = 0), xc, yc. Plane p bounds coordinate p / 2:
  * near and far bound w, the guard planes xc and yc. */
+static int64_t *coord(zs_svert *v, int k)
+{
+    return k == 0 ? &v->w : (k == 1 ? &v->xc : &v->yc);
+}
+
 static int64_t coord_of(const zs_svert *v, int k)
 {
     return k == 0 ? v->w : (k == 1 ? v->xc : v->yc);
@@ -73,19 +78,16 @@ static uint32_t lerp_shade(uint32_t a, uint32_t b, int64_t t_q28)
 static void intersect(const zs_renderer *r, int p, const zs_svert *in, const zs_svert *out,
                       int64_t din, int64_t dout, zs_svert *v)
 {
-    int64_t den = din - dout, c[3], b; /* din >= 0 > dout */
+    int64_t den = din - dout, b; /* din >= 0 > dout */
     int k;
     for (k = 0; k < 3; k++) {
         int64_t a = coord_of(in, k);
-        c[k] = a + zs_muldiv64(coord_of(out, k) - a, din, den, 1);
+        *coord(v, k) = a + zs_muldiv64(coord_of(out, k) - a, din, den, 1);
     }
     /* put the new vertex exactly on the plane (the guard planes' bound
      * depends on its w, so that is set first) */
-    b = plane_bound(r, p, c[0]);
-    c[p >> 1] = p & 1 ? b : -b;
-    v->w = c[0];
-    v->xc = c[1];
-    v->yc = c[2];
+    b = plane_bound(r, p, v->w);
+    *coord(v, p >> 1) = p & 1 ? b : -b;
     v->shade = lerp_shade(in->shade, out->shade, zs_muldiv64((int64_t)1 << 28, din, den, 0));
     v->pool = ZS_NONE;
 }

@@ -76,9 +76,11 @@ static uint32_t lerp_shade(uint32_t a, uint32_t b, int64_t t_q28)
  * same point: in + (out - in) * din / (din - dout), rounded, exact whatever
  * the range of the clip coordinates (they are carried unsaturated). */
 static void intersect(const zs_renderer *r, int p, const zs_svert *in, const zs_svert *out,
-                      int64_t din, int64_t dout, zs_svert *v)
+                      zs_svert *v)
 {
-    int64_t den = din - dout, b; /* din >= 0 > dout */
+    /* the distances again, rather than passed: a smaller frame for the
+     * clipper, which calls this at its deepest */
+    int64_t din = plane_dist(r, p, in), den = din - plane_dist(r, p, out), b; /* > 0 */
     int k;
     for (k = 0; k < 3; k++) {
         int64_t a = coord_of(in, k);
@@ -126,9 +128,9 @@ int zs_clip_polygon(const zs_renderer *r, const zs_svert *in, int n, zs_svert *o
                 dst[m++] = src[i];
             if (in_i != in_j && m < 9) {
                 if (in_i)
-                    intersect(r, p, &src[i], &src[j], di, dj, &dst[m++]);
+                    intersect(r, p, &src[i], &src[j], &dst[m++]);
                 else
-                    intersect(r, p, &src[j], &src[i], dj, di, &dst[m++]);
+                    intersect(r, p, &src[j], &src[i], &dst[m++]);
             }
         }
         src = dst;

@@ -237,7 +237,8 @@ static uint32_t face_color(const draw_ctx *c, uint32_t t)
 /* Outcome priority when pieces of one clipped triangle end differently. */
 static int merge_outcome(int have, int piece)
 {
-    static const uint8_t rank[5] = {4, 1, 2, 0, 3}; /* stored > dropped > empty > culled > rejected */
+    /* stored > dropped > empty > culled > rejected */
+    static const uint8_t rank[5] = {4, 1, 2, 0, 3};
     return rank[piece] > rank[have] ? piece : have;
 }
 

@@ -36,7 +36,7 @@ static int64_t abs64(int64_t v)
 /* Folds scale and projection into the model-view rows where the products
  * fit 32 bits (always, for real scenes: a unit sphere in int16 has a scale
  * near 2^-15); else the general path runs. */
-static void prepare_clip_rows(draw_ctx *c)
+static ZS_NOINLINE void prepare_clip_rows(draw_ctx *c)
 {
     const zs_renderer *r = c->r;
     /* w = -z_eye: the third row's factor -1.0 negates exactly */
@@ -65,7 +65,7 @@ static int32_t sat_count(zs_renderer *r, int64_t v)
  * (counted) only for scales beyond Q16.16; the translation is kept in 64
  * bits, as world and eye positions within the limits may lie more than
  * 32768 units apart. */
-static void model_view(draw_ctx *c)
+static ZS_NOINLINE void model_view(draw_ctx *c)
 {
     const zs_mat34 *v = &c->r->cam.view, *m = c->model;
     int k, j;
@@ -234,6 +234,26 @@ static uint32_t face_color(const draw_ctx *c, uint32_t t)
     return col | (c->tri_flags << 24);
 }
 
+/* Vertices base .. base + n - 1 of the pool from the mesh's first n. Out of
+ * line (called once a draw), so its locals stay off zs_draw's frame, which
+ * lies under the clipper's. */
+static ZS_NOINLINE void transform_vertices(const draw_ctx *c, uint16_t base, uint32_t n)
+{
+    zs_renderer *r = c->r;
+    zs_vert *v = &r->priv.verts[base];
+    uint32_t i;
+    for (i = 0; i < n; i++, v++) {
+        int64_t xc, yc, w;
+        to_clip(c, i, &xc, &yc, &w);
+        if (r->priv.vshade)
+            r->priv.vshade[base + i] = vertex_shade(c, i, w);
+        if (zs_outcode(r, xc, yc, w) & (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_GUARD))
+            v->z = ZS_VERT_UNPROJECTED;
+        else /* near <= w <= far: 32 bits */
+            zs_project(r, xc, yc, (int32_t)w, &v->x, &v->y, &v->z);
+    }
+}
+
 /* Outcome priority when pieces of one clipped triangle end differently. */
 static int merge_outcome(int have, int piece)
 {
@@ -360,17 +380,7 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     room = (uint32_t)r->cfg.max_vertices - base;
     vfit = m->vertex_count < room ? m->vertex_count : room;
     r->stats.verts_dropped += m->vertex_count - vfit;
-    for (i = 0; i < vfit; i++) {
-        zs_vert *v = &pool[base + i];
-        int64_t xc, yc, w;
-        to_clip(&c, i, &xc, &yc, &w);
-        if (r->priv.vshade)
-            r->priv.vshade[base + i] = vertex_shade(&c, i, w);
-        if (zs_outcode(r, xc, yc, w) & (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_GUARD))
-            v->z = ZS_VERT_UNPROJECTED;
-        else /* near <= w <= far: 32 bits */
-            zs_project(r, xc, yc, (int32_t)w, &v->x, &v->y, &v->z);
-    }
+    transform_vertices(&c, base, vfit);
     r->priv.n_verts = (uint16_t)(base + vfit);
     r->stats.verts_stored = r->priv.n_verts;
 

@@ -37,7 +37,7 @@ static int64_t coord_of(const zs_svert *v, int k)
 
 /* The bound of plane p at w: the plane is coord = -bound for even p and
  * coord = bound for odd p, the inside on the side of the bound. */
-static int64_t plane_bound(const zs_renderer *r, int p, int64_t w)
+static ZS_NOINLINE int64_t plane_bound(const zs_renderer *r, int p, int64_t w)
 {
     if (p == 0)
         return -(int64_t)r->cam.near_z;

@@ -98,7 +98,7 @@ int64_t zs_muldiv64(int64_t a, int64_t b, int64_t c, int round)
 }
 
 /* Public results saturate to the full int32 range. */
-static int32_t clamp32(int64_t v)
+static ZS_NOINLINE int32_t clamp32(int64_t v)
 {
     return v > INT32_MAX ? INT32_MAX : (v < INT32_MIN ? INT32_MIN : (int32_t)v);
 }
@@ -203,7 +203,7 @@ zs_fixed zs_fx_cos_deg(zs_fixed deg)
 }
 
 /* The largest |v[i]| (callers' components are far from INT64_MIN). */
-static int64_t max_abs3(const int64_t v[3])
+static ZS_NOINLINE int64_t max_abs3(const int64_t v[3])
 {
     int64_t m = 0;
     int i;
@@ -331,7 +331,7 @@ zs_mat34 zs_mat34_scale(zs_fixed sx, zs_fixed sy, zs_fixed sz)
 }
 
 /* Rotation in the plane of axes a -> b (counter-clockwise about the third). */
-static zs_mat34 rotation(zs_fixed deg, int a, int b)
+static ZS_NOINLINE zs_mat34 rotation(zs_fixed deg, int a, int b)
 {
     zs_mat34 m = zs_mat34_identity();
     zs_fixed c = zs_fx_cos_deg(deg), s = zs_fx_sin_deg(deg);

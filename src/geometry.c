@@ -280,7 +280,7 @@ static uint16_t tag_of(uint32_t tag0, uint32_t t)
 }
 
 /* Is a before b in lexicographic order of (w, yc, xc)? */
-static int svert_before(const zs_svert *a, const zs_svert *b)
+static ZS_NOINLINE int svert_before(const zs_svert *a, const zs_svert *b)
 {
     if (a->w != b->w)
         return a->w < b->w;

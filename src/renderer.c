@@ -46,7 +46,7 @@ static void *carve(uint8_t **cursor, size_t n)
 }
 
 /* The default shading (zs_shade_default) and its pixel size. */
-static void reset_shading(zs_renderer *r)
+static ZS_NOINLINE void reset_shading(zs_renderer *r)
 {
     r->shade = zs_shade_default();
     r->priv.bpp = (uint8_t)zs_format_bytes(r->shade.format);

@@ -91,7 +91,7 @@ typedef char zs_check_acolor[(sizeof(zs_active_color) == ZS_ACTIVE_COLOR_BYTES) 
  * small and its stack frames do not carry their locals. */
 #if defined(__GNUC__)
 #define ZS_COLD __attribute__((cold, noinline))
-#define ZS_NOINLINE __attribute__((noinline)) /* keeps locals off a caller's frame */
+#define ZS_NOINLINE __attribute__((noinline)) /* off a caller's frame, or one copy */
 #else
 #define ZS_COLD
 #define ZS_NOINLINE

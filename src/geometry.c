@@ -28,7 +28,7 @@ typedef struct draw_ctx {
     int32_t mv[3][3];      /* model -> eye, the 3x3 part */
 } draw_ctx;
 
-static int64_t abs64(int64_t v)
+static ZS_NOINLINE int64_t abs64(int64_t v)
 {
     return v < 0 ? -v : v;
 }

@@ -35,8 +35,9 @@ static int64_t coord_of(const zs_svert *v, int k)
     return k == 0 ? v->w : (k == 1 ? v->xc : v->yc);
 }
 
-/* The bound of plane p at w: the plane is coord = -bound for even p and
- * coord = bound for odd p, the inside on the side of the bound. */
+/* The bound of plane p at w: plane p is coord = -bound, inside where
+ * coord + bound >= 0, for even p (near, left, bottom), and coord = bound,
+ * inside where bound - coord >= 0, for odd p (far, right, top). */
 static ZS_NOINLINE int64_t plane_bound(const zs_renderer *r, int p, int64_t w)
 {
     if (p == 0)

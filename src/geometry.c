@@ -273,7 +273,8 @@ static void count_outcome(zs_stats *s, int outcome)
     }
 }
 
-/* The tag of the triangle drawn as number n of the frame: 1..65535. */
+/* The tag of triangle t of a draw that starts at frame count tag0: 1..65535
+ * (the count wraps like the 32-bit counter it replaces). */
 static uint16_t tag_of(uint32_t tag0, uint32_t t)
 {
     return (uint16_t)((tag0 + t) % 65535u + 1u);

@@ -150,16 +150,16 @@ static void sort_canonical(const zs_renderer *r, const zs_tri *t, const zs_vert 
 void zs_anchor_depth(const zs_renderer *r, zs_active *a, int32_t xa, int32_t y)
 {
     const zs_vert *s[3];
-    int64_t px = 16 * (int64_t)xa + 8, py = 16 * (int64_t)y + 8, d, l0, l1, l2, z;
+    zs_vert p; /* the pixel centre: 0 <= xa, y <= ZS_MAX_DIM, so it fits int16 */
+    int64_t d, l0, l1, l2, z;
     sort_canonical(r, &r->priv.tris[a->tri], s);
+    p.x = (int16_t)(16 * xa + 8);
+    p.y = (int16_t)(16 * y + 8);
     /* twice the area, and the barycentric numerators of s[1] and s[2] at
      * the centre (edge functions; all below 2^35) */
-    d = ((int64_t)s[1]->x - s[0]->x) * ((int64_t)s[2]->y - s[0]->y) -
-        ((int64_t)s[2]->x - s[0]->x) * ((int64_t)s[1]->y - s[0]->y);
-    l1 = ((int64_t)s[0]->x - s[2]->x) * (py - s[2]->y) -
-         ((int64_t)s[0]->y - s[2]->y) * (px - s[2]->x);
-    l2 = ((int64_t)s[1]->x - s[0]->x) * (py - s[0]->y) -
-         ((int64_t)s[1]->y - s[0]->y) * (px - s[0]->x);
+    d = zs_area2(s[0], s[1], s[2]);
+    l1 = zs_area2(s[2], s[0], &p);
+    l2 = zs_area2(s[0], s[1], &p);
     if (d < 0) {
         d = -d;
         l1 = -l1;
@@ -210,8 +210,7 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     sort_canonical(r, t, s);
     /* twice the area in canonical order; its sign says which side of the
      * long edge top -> bottom the middle vertex lies on */
-    cross = ((int64_t)s[1]->x - s[0]->x) * ((int64_t)s[2]->y - s[0]->y) -
-            ((int64_t)s[2]->x - s[0]->x) * ((int64_t)s[1]->y - s[0]->y);
+    cross = zs_area2(s[0], s[1], s[2]);
     long_left = cross > 0; /* middle vertex to the right: the long edge leads */
     a->tri = ti;
     a->inside = 0;

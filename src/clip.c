@@ -23,18 +23,35 @@ unsigned zs_outcode(const zs_renderer *r, int64_t xc, int64_t yc, int64_t w)
     return oc;
 }
 
+/* Clip coordinate k: w (k = 0), xc, yc. Plane p bounds coordinate p / 2:
+ * near and far bound w, the guard planes xc and yc. */
+static int64_t *coord(zs_svert *v, int k)
+{
+    return k == 0 ? &v->w : (k == 1 ? &v->xc : &v->yc);
+}
+
+static int64_t coord_of(const zs_svert *v, int k)
+{
+    return k == 0 ? v->w : (k == 1 ? v->xc : v->yc);
+}
+
+/* The bound of plane p at w: plane p is coord = -bound, inside where
+ * coord + bound >= 0, for even p (near, left, bottom), and coord = bound,
+ * inside where bound - coord >= 0, for odd p (far, right, top). */
+static ZS_NOINLINE int64_t plane_bound(const zs_renderer *r, int p, int64_t w)
+{
+    if (p == 0)
+        return -(int64_t)r->cam.near_z;
+    if (p == 1)
+        return r->cam.far_z;
+    return r->priv.guard * w;
+}
+
 /* Signed distance to plane p (inside when >= 0). */
 static int64_t plane_dist(const zs_renderer *r, int p, const zs_svert *v)
 {
-    int64_t gw = r->priv.guard * v->w;
-    switch (p) {
-    case 0: return v->w - r->cam.near_z;
-    case 1: return r->cam.far_z - v->w;
-    case 2: return gw + v->xc;
-    case 3: return gw - v->xc;
-    case 4: return gw + v->yc;
-    default: return gw - v->yc;
-    }
+    int64_t c = coord_of(v, p >> 1);
+    return (p & 1 ? -c : c) + plane_bound(r, p, v->w);
 }
 
 static int32_t lerp32(int32_t a, int32_t b, int64_t t_q28)
@@ -55,70 +72,66 @@ static uint32_t lerp_shade(uint32_t a, uint32_t b, int64_t t_q28)
     return out;
 }
 
-/* in + (out - in) * din / (din - dout), rounded: exact whatever the range
- * of the clip coordinates (they are carried unsaturated). */
-static int64_t lerp64(int64_t in, int64_t out, int64_t din, int64_t den)
+/* v = the point where edge in -> out crosses plane p. Always interpolated
+ * from the inside vertex so that two triangles sharing the edge get the
+ * same point: in + (out - in) * din / (din - dout), rounded, exact whatever
+ * the range of the clip coordinates (they are carried unsaturated). */
+static void intersect(const zs_renderer *r, int p, const zs_svert *in, const zs_svert *out,
+                      zs_svert *v)
 {
-    return in + zs_muldiv64(out - in, din, den, 1);
-}
-
-/* The point where edge in -> out crosses plane p. Always interpolated from
- * the inside vertex so that two triangles sharing the edge get the same point. */
-static zs_svert intersect(const zs_renderer *r, int p, const zs_svert *in, const zs_svert *out,
-                          int64_t din, int64_t dout)
-{
-    zs_svert v;
-    int64_t den = din - dout; /* din >= 0 > dout */
-    v.xc = lerp64(in->xc, out->xc, din, den);
-    v.yc = lerp64(in->yc, out->yc, din, den);
-    v.w = lerp64(in->w, out->w, din, den);
-    v.shade = lerp_shade(in->shade, out->shade, zs_muldiv64((int64_t)1 << 28, din, den, 0));
-    v.pool = ZS_NONE;
-    /* put the new vertex exactly on the plane */
-    switch (p) {
-    case 0: v.w = r->cam.near_z; break;
-    case 1: v.w = r->cam.far_z; break;
-    case 2: v.xc = -r->priv.guard * v.w; break;
-    case 3: v.xc = r->priv.guard * v.w; break;
-    case 4: v.yc = -r->priv.guard * v.w; break;
-    default: v.yc = r->priv.guard * v.w; break;
+    /* the distances again, rather than passed: a smaller frame for the
+     * clipper, which calls this at its deepest */
+    int64_t din = plane_dist(r, p, in), den = din - plane_dist(r, p, out), b; /* > 0 */
+    int k;
+    for (k = 0; k < 3; k++) {
+        int64_t a = coord_of(in, k);
+        *coord(v, k) = a + zs_muldiv64(coord_of(out, k) - a, din, den, 1);
     }
-    return v;
+    /* put the new vertex exactly on the plane (the guard planes' bound
+     * depends on its w, so that is set first) */
+    b = plane_bound(r, p, v->w);
+    *coord(v, p >> 1) = p & 1 ? b : -b;
+    v->shade = lerp_shade(in->shade, out->shade, zs_muldiv64((int64_t)1 << 28, din, den, 0));
+    v->pool = ZS_NONE;
 }
 
 int zs_clip_polygon(const zs_renderer *r, const zs_svert *in, int n, zs_svert *out)
 {
     /* planes alternate between buf and out (one scratch polygon on the
      * stack, not two: clip vertices are 32 bytes); the first plane that cuts
-     * reads in and writes buf, so out may be in */
+     * reads in and writes buf, so out may be in. Distances are recomputed
+     * rather than kept, to keep this frame small. */
     zs_svert buf[9];
     const zs_svert *src = in;
     int p, i, cnt = n;
     for (p = 0; p < 6 && cnt >= 3; p++) {
-        int64_t d[9];
         int any_out = 0;
         zs_svert *dst;
         int m = 0;
-        for (i = 0; i < cnt; i++) {
-            d[i] = plane_dist(r, p, &src[i]);
-            if (d[i] < 0)
+        int64_t di, dj;
+        for (i = 0; i < cnt; i++)
+            if (plane_dist(r, p, &src[i]) < 0)
                 any_out = 1;
-        }
         if (!any_out)
             continue;
         dst = src == buf ? out : buf;
+        dj = plane_dist(r, p, &src[0]);
         for (i = 0; i < cnt; i++) {
             int j = (i + 1 == cnt) ? 0 : i + 1;
-            int in_i = d[i] >= 0, in_j = d[j] >= 0;
+            int in_i, in_j;
+            di = dj;
+            dj = plane_dist(r, p, &src[j]);
+            in_i = di >= 0;
+            in_j = dj >= 0;
             /* a polygon made slightly non-convex by rounding could be cut
              * twice by one plane: never write past the 9 slots */
             if (in_i && m < 9)
                 dst[m++] = src[i];
             if (in_i != in_j && m < 9) {
                 if (in_i)
-                    dst[m++] = intersect(r, p, &src[i], &src[j], d[i], d[j]);
+                    intersect(r, p, &src[i], &src[j], &dst[m++]);
                 else
-                    dst[m++] = intersect(r, p, &src[j], &src[i], d[j], d[i]);
+                    intersect(r, p, &src[j], &src[i], &dst[m++]);
             }
         }
         src = dst;

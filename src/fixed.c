@@ -3,24 +3,6 @@
  * input can overflow (signed overflow is undefined behaviour in C). */
 #include "zs_internal.h"
 
-int64_t zs_floor_div64(int64_t a, int64_t b)
-{
-    int64_t q = a / b;
-    if ((a % b != 0) && ((a < 0) != (b < 0)))
-        q--;
-    return q;
-}
-
-int64_t zs_round_div64(int64_t a, int64_t b)
-{
-    /* floor((a + b/2) / b) without forming a + b/2 when it could overflow */
-    int64_t q = zs_floor_div64(a, b);
-    int64_t rem = a - q * b; /* 0 <= rem < b */
-    if (rem >= b - rem)
-        q++;
-    return q;
-}
-
 /* Leading zeros of a non-zero 64-bit value. */
 static unsigned clz64(uint64_t v)
 {
@@ -119,30 +101,23 @@ static void mul_64x64(uint64_t a, uint64_t b, uint64_t *hi, uint64_t *lo)
 int64_t zs_muldiv64(int64_t a, int64_t b, int64_t c, int round)
 {
     uint64_t ua = a < 0 ? (uint64_t)0 - (uint64_t)a : (uint64_t)a;
-    uint64_t ub = (uint64_t)b, uc = (uint64_t)c, q, rem;
-    if (ua < ((uint64_t)1 << 31) && ub < ((uint64_t)1 << 32)) {
-        uint64_t p = ua * ub; /* below 2^63: the common case, one division */
-        q = p / uc;
-        rem = p - q * uc;
+    uint64_t uc = (uint64_t)c, hi, lo, q, rem;
+    int i;
+    mul_64x64(ua, (uint64_t)b, &hi, &lo);
+    if (hi == 0) { /* the common case: one division */
+        q = lo / uc;
+        rem = lo - q * uc;
     } else {
-        uint64_t hi, lo;
-        int i;
-        mul_64x64(ua, ub, &hi, &lo);
-        if (hi == 0) {
-            q = lo / uc;
-            rem = lo - q * uc;
-        } else {
-            /* b <= c keeps the quotient below 2^63, so hi < c: long
-             * division by bits, the remainder staying below 2c < 2^64 */
-            q = 0;
-            rem = hi;
-            for (i = 63; i >= 0; i--) {
-                rem = (rem << 1) | ((lo >> i) & 1u);
-                q <<= 1;
-                if (rem >= uc) {
-                    rem -= uc;
-                    q |= 1u;
-                }
+        /* b <= c keeps the quotient below 2^63, so hi < c: long division
+         * by bits, the remainder staying below 2c < 2^64 */
+        q = 0;
+        rem = hi;
+        for (i = 63; i >= 0; i--) {
+            rem = (rem << 1) | ((lo >> i) & 1u);
+            q <<= 1;
+            if (rem >= uc) {
+                rem -= uc;
+                q |= 1u;
             }
         }
     }
@@ -152,7 +127,7 @@ int64_t zs_muldiv64(int64_t a, int64_t b, int64_t c, int round)
 }
 
 /* Public results saturate to the full int32 range. */
-static int32_t clamp32(int64_t v)
+static ZS_NOINLINE int32_t clamp32(int64_t v)
 {
     return v > INT32_MAX ? INT32_MAX : (v < INT32_MIN ? INT32_MIN : (int32_t)v);
 }
@@ -203,42 +178,21 @@ static int64_t mul_q30(int64_t a, int64_t b)
     return zs_asr64(a * b + ((int64_t)1 << 29), 30);
 }
 
-/* sin x and cos x for 0 <= x <= pi/4 (x in Q30), by their Taylor series. */
-static int64_t sin_small(int64_t x)
-{
-    int64_t x2 = mul_q30(x, x);
-    /* x (1 - x2/6 (1 - x2/20 (1 - x2/42 (1 - x2/72 (1 - x2/110))))) */
-    int64_t one = (int64_t)1 << 30;
-    int64_t t = one - x2 / 110;
-    t = one - mul_q30(x2, t) / 72;
-    t = one - mul_q30(x2, t) / 42;
-    t = one - mul_q30(x2, t) / 20;
-    t = one - mul_q30(x2, t) / 6;
-    return mul_q30(x, t);
-}
-
-static int64_t cos_small(int64_t x)
-{
-    int64_t x2 = mul_q30(x, x);
-    int64_t one = (int64_t)1 << 30;
-    int64_t t = one - x2 / 132;
-    t = one - mul_q30(x2, t) / 90;
-    t = one - mul_q30(x2, t) / 56;
-    t = one - mul_q30(x2, t) / 30;
-    t = one - mul_q30(x2, t) / 12;
-    t = one - mul_q30(x2, t) / 2;
-    return t;
-}
+/* Taylor series of sin x / x and cos x for 0 <= x <= pi/4, in Horner form:
+ * 1 - x2/6 (1 - x2/20 (1 - ...)), innermost divisor first, 0 ends a list. */
+static const uint8_t taylor_div[2][7] = {{110, 72, 42, 20, 6, 0}, {132, 90, 56, 30, 12, 2, 0}};
 
 int32_t zs_sin_q30(zs_fixed deg)
 {
-    const int64_t full = (int64_t)360 * 65536;
-    const int64_t quarter = (int64_t)90 * 65536;
+    const int32_t full = 360 * 65536;
+    const int32_t quarter = 90 * 65536;
     /* pi / 180 in Q40, so degrees Q16 * this >> 26 is radians Q30 */
     const int64_t rad_per_deg_q40 = 19190098281LL;
-    int64_t a = (int64_t)deg % full;
-    int neg = 0;
-    int64_t x, s;
+    const int64_t one = (int64_t)1 << 30;
+    int32_t a = deg % full;
+    int neg = 0, use_cos;
+    const uint8_t *d;
+    int64_t x, x2, t = one;
     if (a < 0)
         a += full;
     if (a >= full / 2) { /* sin(a) = -sin(a - 180) */
@@ -247,76 +201,102 @@ int32_t zs_sin_q30(zs_fixed deg)
     }
     if (a > quarter) /* sin(a) = sin(180 - a) */
         a = full / 2 - a;
-    /* now 0 <= a <= 90 degrees */
-    if (a <= quarter / 2) {
-        x = zs_asr64(a * rad_per_deg_q40 + ((int64_t)1 << 25), 26);
-        s = sin_small(x);
-    } else {
-        x = zs_asr64((quarter - a) * rad_per_deg_q40 + ((int64_t)1 << 25), 26);
-        s = cos_small(x);
-    }
-    if (s > ((int64_t)1 << 30))
-        s = (int64_t)1 << 30;
-    if (s < 0)
-        s = 0;
-    return (int32_t)(neg ? -s : s);
+    /* now 0 <= a <= 90 degrees; beyond 45 it is cos(90 - a) */
+    use_cos = a > quarter / 2;
+    if (use_cos)
+        a = quarter - a;
+    x = zs_asr64(a * rad_per_deg_q40 + ((int64_t)1 << 25), 26);
+    x2 = mul_q30(x, x);
+    /* x2, t <= 2^30 keep each product's quotient below 2^31: a 32-bit
+     * division gives the same (non-negative) quotient */
+    for (d = taylor_div[use_cos]; *d; d++)
+        t = one - (int64_t)((uint32_t)mul_q30(x2, t) / *d);
+    if (!use_cos)
+        t = mul_q30(x, t);
+    if (t > one)
+        t = one;
+    if (t < 0)
+        t = 0;
+    return (int32_t)(neg ? -t : t);
 }
 
 zs_fixed zs_fx_sin_deg(zs_fixed deg)
 {
-    return (zs_fixed)zs_asr64((int64_t)zs_sin_q30(deg) + 8192, 14);
+    return zs_asr32(zs_sin_q30(deg) + 8192, 14); /* |sin| <= 2^30: no overflow */
 }
 
 zs_fixed zs_fx_cos_deg(zs_fixed deg)
 {
     /* cos(a) = sin(a + 90); reduce first so the addition cannot overflow */
-    int64_t a = (int64_t)deg % ((int64_t)360 * 65536) + (int64_t)90 * 65536;
-    return (zs_fixed)zs_asr64((int64_t)zs_sin_q30((zs_fixed)a) + 8192, 14);
+    return zs_fx_sin_deg(deg % (360 * 65536) + 90 * 65536);
 }
 
-static int64_t abs64(int64_t v)
+/* The largest |v[i]| (callers' components are far from INT64_MIN). */
+static ZS_NOINLINE int64_t max_abs3(const int64_t v[3])
 {
-    return v < 0 ? -v : v;
+    int64_t m = 0;
+    int i;
+    for (i = 0; i < 3; i++) {
+        int64_t a = v[i] < 0 ? -v[i] : v[i];
+        if (a > m)
+            m = a;
+    }
+    return m;
 }
 
 void zs_shrink3(int64_t v[3], int64_t limit)
 {
-    while (abs64(v[0]) >= limit || abs64(v[1]) >= limit || abs64(v[2]) >= limit) {
-        v[0] /= 2;
-        v[1] /= 2;
-        v[2] /= 2;
-    }
+    int i;
+    while (max_abs3(v) >= limit)
+        for (i = 0; i < 3; i++)
+            v[i] /= 2;
 }
 
 int zs_normalize3(const int64_t v[3], int32_t out[3])
 {
-    int64_t t[3];
-    uint64_t len2;
+    int64_t t[3], m;
+    uint64_t len2 = 0;
     uint32_t len;
     int i;
-    t[0] = v[0];
-    t[1] = v[1];
-    t[2] = v[2];
+    for (i = 0; i < 3; i++)
+        t[i] = v[i];
     /* keep components below 2^30 so the squares sum below 2^62 */
     zs_shrink3(t, (int64_t)1 << 30);
     /* and above 2^20 where possible, for precision */
-    while (t[0] != 0 || t[1] != 0 || t[2] != 0) {
-        if (abs64(t[0]) >= ((int64_t)1 << 20) || abs64(t[1]) >= ((int64_t)1 << 20) ||
-            abs64(t[2]) >= ((int64_t)1 << 20))
-            break;
-        t[0] *= 2;
-        t[1] *= 2;
-        t[2] *= 2;
-    }
-    len2 = (uint64_t)(t[0] * t[0]) + (uint64_t)(t[1] * t[1]) + (uint64_t)(t[2] * t[2]);
-    len = zs_isqrt64(len2);
-    if (len == 0) {
-        out[0] = out[1] = out[2] = 0;
-        return 0;
-    }
+    while ((m = max_abs3(t)) != 0 && m < ((int64_t)1 << 20))
+        for (i = 0; i < 3; i++)
+            t[i] *= 2;
     for (i = 0; i < 3; i++)
-        out[i] = (int32_t)zs_round_div64(t[i] * 65536, (int64_t)len);
-    return 1;
+        len2 += (uint64_t)(t[i] * t[i]);
+    len = zs_isqrt64(len2);
+    for (i = 0; i < 3; i++) {
+        /* round(t * 65536 / len), halves up: floor division, then the
+         * remainder against the rest of the divisor (no overflow) */
+        int64_t a = t[i] * 65536, q, rem;
+        if (len == 0) {
+            out[i] = 0;
+            continue;
+        }
+        q = a / len;
+        rem = a % len;
+        if (rem < 0) {
+            q--;
+            rem += len;
+        }
+        if (rem >= (int64_t)len - rem)
+            q++;
+        out[i] = (int32_t)q;
+    }
+    return len != 0;
+}
+
+void zs_cross3(const int32_t a[3], const int32_t b[3], int64_t out[3])
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        int k1 = k == 2 ? 0 : k + 1, k2 = k == 0 ? 2 : k - 1;
+        out[k] = (int64_t)a[k1] * b[k2] - (int64_t)a[k2] * b[k1];
+    }
 }
 
 int64_t zs_dot3_q16(const int32_t a[3], const int32_t b[3])
@@ -332,12 +312,12 @@ int64_t zs_dot3_q16(const int32_t a[3], const int32_t b[3])
     return hi + zs_asr64(lo + 32768, 16);
 }
 
+const zs_mat34 zs_identity34 = {
+    {{ZS_FX_ONE, 0, 0, 0}, {0, ZS_FX_ONE, 0, 0}, {0, 0, ZS_FX_ONE, 0}}};
+
 zs_mat34 zs_mat34_identity(void)
 {
-    zs_mat34 m;
-    memset(&m, 0, sizeof m);
-    m.m[0][0] = m.m[1][1] = m.m[2][2] = ZS_FX_ONE;
-    return m;
+    return zs_identity34;
 }
 
 zs_mat34 zs_mat34_mul(const zs_mat34 *a, const zs_mat34 *b)
@@ -380,7 +360,7 @@ zs_mat34 zs_mat34_scale(zs_fixed sx, zs_fixed sy, zs_fixed sz)
 }
 
 /* Rotation in the plane of axes a -> b (counter-clockwise about the third). */
-static zs_mat34 rotation(zs_fixed deg, int a, int b)
+static ZS_NOINLINE zs_mat34 rotation(zs_fixed deg, int a, int b)
 {
     zs_mat34 m = zs_mat34_identity();
     zs_fixed c = zs_fx_cos_deg(deg), s = zs_fx_sin_deg(deg);

@@ -2,6 +2,13 @@
  * bytes the line buffer holds (the panel's byte order). */
 #include "zs_internal.h"
 
+#if defined(__OPTIMIZE_SIZE__)
+void zs_fill_flat(uint8_t *row, int x0, int x1, unsigned bpp, uint32_t pixel)
+{
+    zs_fill_flat_body(row, x0, x1, bpp, pixel);
+}
+#endif
+
 unsigned zs_format_bytes(zs_format fmt)
 {
     switch (fmt) {

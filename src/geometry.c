@@ -11,22 +11,24 @@
  * limits; they are clamped so that the clip transform cannot overflow. */
 #define EYE_LIMIT ((int64_t)1 << 46)
 
+/* Lives in zs_draw's frame, under every call of the geometry stage: kept
+ * small (no copy of the model matrix, no unused translation column). */
 typedef struct draw_ctx {
     zs_renderer *r;
     const zs_mesh *mesh;
-    zs_mat34 model;     /* model -> world, for normals */
-    zs_mat34 mv;        /* model -> eye; its translation column is unused */
-    int64_t mv_t[3];    /* model -> eye translation, Q16, unsaturated */
-    int lit;            /* lighting changes colours */
-    int vertex_light;   /* lighting per vertex (Gouraud with vertex normals) */
-    int vertex_color;   /* Gouraud with per-vertex colours */
+    const zs_mat34 *model; /* model -> world, for normals (the caller's) */
+    uint8_t fast;          /* the folded rows below fit 32 bits */
+    uint8_t lit;           /* lighting changes colours */
+    uint8_t vertex_light;  /* lighting per vertex (Gouraud with vertex normals) */
+    uint8_t vertex_color;  /* Gouraud with per-vertex colours */
     uint32_t tri_flags;
-    int fast;           /* the folded rows below fit 32 bits */
-    int32_t clip[3][3]; /* int16 position -> xc, yc, w, Q32 (scale and projection folded in) */
-    int64_t clip_t[3];  /* the translations, Q16 */
+    int32_t clip[3][3];    /* int16 position -> xc, yc, w, Q32 (scale and projection folded in) */
+    int64_t clip_t[3];     /* the translations, Q16 */
+    int64_t mv_t[3];       /* model -> eye translation, Q16, unsaturated */
+    int32_t mv[3][3];      /* model -> eye, the 3x3 part */
 } draw_ctx;
 
-static int64_t abs64(int64_t v)
+static ZS_NOINLINE int64_t abs64(int64_t v)
 {
     return v < 0 ? -v : v;
 }
@@ -34,23 +36,23 @@ static int64_t abs64(int64_t v)
 /* Folds scale and projection into the model-view rows where the products
  * fit 32 bits (always, for real scenes: a unit sphere in int16 has a scale
  * near 2^-15); else the general path runs. */
-static void prepare_clip_rows(draw_ctx *c)
+static ZS_NOINLINE void prepare_clip_rows(draw_ctx *c)
 {
     const zs_renderer *r = c->r;
-    const int64_t sign[3] = {1, 1, -1}; /* w = -z_eye */
-    const int32_t proj[3] = {r->priv.proj_sx, r->priv.proj_sy, 65536};
+    /* w = -z_eye: the third row's factor -1.0 negates exactly */
+    const int32_t proj[3] = {r->priv.proj_sx, r->priv.proj_sy, -65536};
     int k, j;
     c->fast = abs64(c->mesh->scale) < ((int64_t)1 << 30);
     for (k = 0; k < 3 && c->fast; k++) {
         for (j = 0; j < 3; j++) {
-            int64_t m = zs_asr64((int64_t)c->mv.m[k][j] * proj[k] + 32768, 16) * sign[k];
+            int64_t m = zs_asr64((int64_t)c->mv[k][j] * proj[k] + 32768, 16);
             if (abs64(m) >= ((int64_t)1 << 31) || abs64(m * c->mesh->scale) >= INT32_MAX) {
                 c->fast = 0;
                 break;
             }
             c->clip[k][j] = (int32_t)(m * c->mesh->scale);
         }
-        c->clip_t[k] = zs_mul_q16_wide(c->mv_t[k], proj[k]) * sign[k];
+        c->clip_t[k] = zs_mul_q16_wide(c->mv_t[k], proj[k]);
     }
 }
 
@@ -63,24 +65,23 @@ static int32_t sat_count(zs_renderer *r, int64_t v)
  * (counted) only for scales beyond Q16.16; the translation is kept in 64
  * bits, as world and eye positions within the limits may lie more than
  * 32768 units apart. */
-static void model_view(draw_ctx *c)
+static ZS_NOINLINE void model_view(draw_ctx *c)
 {
-    const zs_mat34 *v = &c->r->cam.view, *m = &c->model;
+    const zs_mat34 *v = &c->r->cam.view, *m = c->model;
     int k, j;
     for (k = 0; k < 3; k++) {
-        int32_t t[3];
-        for (j = 0; j < 3; j++) {
+        for (j = 0; j < 4; j++) { /* column j of the model */
             int32_t col[3];
+            int64_t s;
             col[0] = m->m[0][j];
             col[1] = m->m[1][j];
             col[2] = m->m[2][j];
-            c->mv.m[k][j] = sat_count(c->r, zs_dot3_q16(v->m[k], col));
+            s = zs_dot3_q16(v->m[k], col);
+            if (j < 3)
+                c->mv[k][j] = sat_count(c->r, s);
+            else
+                c->mv_t[k] = s + v->m[k][3];
         }
-        t[0] = m->m[0][3];
-        t[1] = m->m[1][3];
-        t[2] = m->m[2][3];
-        c->mv.m[k][3] = 0;
-        c->mv_t[k] = zs_dot3_q16(v->m[k], t) + v->m[k][3];
     }
 }
 
@@ -123,7 +124,7 @@ static void to_clip(const draw_ctx *c, uint32_t i, int64_t *xc, int64_t *yc, int
         for (k = 0; k < 3; k++) {
             /* within the limits |e| < 2^34; beyond them clamp (counted) so
              * that the products below stay defined */
-            e[k] = zs_dot3_q16(c->mv.m[k], p) + c->mv_t[k];
+            e[k] = zs_dot3_q16(c->mv[k], p) + c->mv_t[k];
             if (e[k] > EYE_LIMIT || e[k] < -EYE_LIMIT) {
                 r->stats.saturated++;
                 e[k] = e[k] > 0 ? EYE_LIMIT : -EYE_LIMIT;
@@ -135,23 +136,20 @@ static void to_clip(const draw_ctx *c, uint32_t i, int64_t *xc, int64_t *yc, int
     }
 }
 
-/* Light intensity (Q16.16) for a model-space normal direction n. */
-static zs_fixed light_intensity(const draw_ctx *c, const int64_t n_model[3])
+/* Light intensity (Q16.16) for a model-space normal direction n (the
+ * caller's scratch: changed). */
+static zs_fixed light_intensity(const draw_ctx *c, int64_t n[3])
 {
     const zs_renderer *r = c->r;
-    int64_t n[3];
     int32_t nm[3], unit[3];
     int64_t total = r->shade.ambient;
     int k;
-    n[0] = n_model[0];
-    n[1] = n_model[1];
-    n[2] = n_model[2];
     zs_shrink3(n, (int64_t)1 << 24);
     nm[0] = (int32_t)n[0];
     nm[1] = (int32_t)n[1];
     nm[2] = (int32_t)n[2];
     for (k = 0; k < 3; k++) /* the model's 3x3 takes normals to world space */
-        n[k] = zs_dot3_q16(c->model.m[k], nm);
+        n[k] = zs_dot3_q16(c->model->m[k], nm);
     if (zs_normalize3(n, unit)) {
         for (k = 0; k < r->shade.light_count; k++) {
             int32_t l[3];
@@ -208,9 +206,10 @@ static uint32_t average3(uint32_t a, uint32_t b, uint32_t c)
 }
 
 /* Face colour with flags, lit per face when lighting is not per vertex. */
-static uint32_t face_color(const draw_ctx *c, uint32_t t, const uint16_t idx[3])
+static uint32_t face_color(const draw_ctx *c, uint32_t t)
 {
     const zs_mesh *m = c->mesh;
+    const uint16_t *idx = m->indices + 3u * t;
     uint32_t col;
     if (c->vertex_color)
         col = WHITE;
@@ -232,30 +231,47 @@ static uint32_t face_color(const draw_ctx *c, uint32_t t, const uint16_t idx[3])
             const int16_t *p0 = m->positions + 3u * idx[0];
             const int16_t *p1 = m->positions + 3u * idx[1];
             const int16_t *p2 = m->positions + 3u * idx[2];
-            int64_t a[3], b[3];
+            int32_t a[3], b[3]; /* int16 differences */
             int k;
             for (k = 0; k < 3; k++) {
-                a[k] = (int64_t)p1[k] - p0[k];
-                b[k] = (int64_t)p2[k] - p0[k];
+                a[k] = p1[k] - p0[k];
+                b[k] = p2[k] - p0[k];
             }
-            n[0] = a[1] * b[2] - a[2] * b[1];
-            n[1] = a[2] * b[0] - a[0] * b[2];
-            n[2] = a[0] * b[1] - a[1] * b[0];
-            if (m->scale < 0) { /* a mirrored mesh turns its normals */
-                n[0] = -n[0];
-                n[1] = -n[1];
-                n[2] = -n[2];
-            }
+            zs_cross3(a, b, n);
+            if (m->scale < 0) /* a mirrored mesh turns its normals */
+                for (k = 0; k < 3; k++)
+                    n[k] = -n[k];
         }
         col = zs_light_color(col, light_intensity(c, n));
     }
     return col | (c->tri_flags << 24);
 }
 
+/* Vertices base .. base + n - 1 of the pool from the mesh's first n. Out of
+ * line (called once a draw), so its locals stay off zs_draw's frame, which
+ * lies under the clipper's. */
+static ZS_NOINLINE void transform_vertices(const draw_ctx *c, uint16_t base, uint32_t n)
+{
+    zs_renderer *r = c->r;
+    zs_vert *v = &r->priv.verts[base];
+    uint32_t i;
+    for (i = 0; i < n; i++, v++) {
+        int64_t xc, yc, w;
+        to_clip(c, i, &xc, &yc, &w);
+        if (r->priv.vshade)
+            r->priv.vshade[base + i] = vertex_shade(c, i, w);
+        if (zs_outcode(r, xc, yc, w) & (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_GUARD))
+            v->z = ZS_VERT_UNPROJECTED;
+        else /* near <= w <= far: 32 bits */
+            zs_project(r, xc, yc, (int32_t)w, &v->x, &v->y, &v->z);
+    }
+}
+
 /* Outcome priority when pieces of one clipped triangle end differently. */
 static int merge_outcome(int have, int piece)
 {
-    static const int rank[5] = {4, 1, 2, 0, 3}; /* stored > dropped > empty > culled > rejected */
+    /* stored > dropped > empty > culled > rejected */
+    static const uint8_t rank[5] = {4, 1, 2, 0, 3};
     return rank[piece] > rank[have] ? piece : have;
 }
 
@@ -270,8 +286,15 @@ static void count_outcome(zs_stats *s, int outcome)
     }
 }
 
+/* The tag of triangle t of a draw that starts at frame count tag0: 1..65535
+ * (the count wraps like the 32-bit counter it replaces). */
+static uint16_t tag_of(uint32_t tag0, uint32_t t)
+{
+    return (uint16_t)((tag0 + t) % 65535u + 1u);
+}
+
 /* Is a before b in lexicographic order of (w, yc, xc)? */
-static int svert_before(const zs_svert *a, const zs_svert *b)
+static ZS_NOINLINE int svert_before(const zs_svert *a, const zs_svert *b)
 {
     if (a->w != b->w)
         return a->w < b->w;
@@ -286,9 +309,9 @@ static int first_vertex(const zs_svert in[3])
     return svert_before(&in[2], &in[k]) ? 2 : k;
 }
 
-/* A triangle with a vertex outside near/far/guard: reject or clip it. */
-static int clip_and_setup(draw_ctx *c, uint16_t base, const uint16_t idx[3], uint32_t t,
-                          uint16_t tag)
+/* Triangle t with a vertex outside near/far/guard: reject or clip it. It
+ * reads its indices itself, so the caller's stay in registers. */
+static ZS_COLD int clip_and_setup(draw_ctx *c, uint16_t base, uint32_t t, uint16_t tag)
 {
     zs_renderer *r = c->r;
     zs_vert *pool = r->priv.verts;
@@ -296,6 +319,7 @@ static int clip_and_setup(draw_ctx *c, uint16_t base, const uint16_t idx[3], uin
     unsigned and_codes = 0xFFu;
     int n, k, outcome = ZS_SETUP_REJECTED;
     uint32_t color;
+    const uint16_t *idx = c->mesh->indices + 3u * t;
     for (k = 0; k < 3; k++) {
         const zs_vert *pv = &pool[base + idx[k]];
         to_clip(c, idx[k], &v[k].xc, &v[k].yc, &v[k].w);
@@ -309,22 +333,16 @@ static int clip_and_setup(draw_ctx *c, uint16_t base, const uint16_t idx[3], uin
     /* start from a canonical vertex: the same triangle with its vertices
      * rotated is then cut into the same pieces (equal planes, so exact ties
      * still go to the earlier triangle) */
-    k = first_vertex(v);
-    if (k == 1) {
-        zs_svert tmp = v[0];
+    for (k = first_vertex(v); k > 0; k--) { /* rotate left k times */
+        v[3] = v[0];
         v[0] = v[1];
         v[1] = v[2];
-        v[2] = tmp;
-    } else if (k == 2) {
-        zs_svert tmp = v[2];
-        v[2] = v[1];
-        v[1] = v[0];
-        v[0] = tmp;
+        v[2] = v[3];
     }
     n = zs_clip_polygon(r, v, 3, v);
     if (n < 3)
         return ZS_SETUP_REJECTED;
-    color = face_color(c, t, idx);
+    color = face_color(c, t);
     for (k = 0; k < n; k++)
         if (v[k].pool == ZS_NONE)
             v[k].pool = zs_project_vertex(r, v[k].xc, v[k].yc, (int32_t)v[k].w, v[k].shade);
@@ -346,7 +364,7 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
 {
     draw_ctx c;
     zs_vert *pool;
-    uint32_t i, t, vfit, room;
+    uint32_t i, t, vfit, room, tag0;
     uint16_t base;
     if (!r || !m)
         return ZS_ERR_NULL;
@@ -359,12 +377,13 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
             return ZS_ERR_INDEX;
     c.r = r;
     c.mesh = m;
-    c.model = model ? *model : zs_mat34_identity();
+    c.model = model ? model : &zs_identity34;
     model_view(&c);
     prepare_clip_rows(&c);
-    c.lit = r->shade.light_count > 0 || r->shade.ambient != ZS_FX_ONE;
-    c.vertex_light = r->shade.shading == ZS_SHADE_GOURAUD && c.lit && m->vertex_normals != 0;
-    c.vertex_color = r->shade.shading == ZS_SHADE_GOURAUD && m->vertex_colors != 0;
+    c.lit = (uint8_t)(r->shade.light_count > 0 || r->shade.ambient != ZS_FX_ONE);
+    c.vertex_light =
+        (uint8_t)(r->shade.shading == ZS_SHADE_GOURAUD && c.lit && m->vertex_normals != 0);
+    c.vertex_color = (uint8_t)(r->shade.shading == ZS_SHADE_GOURAUD && m->vertex_colors != 0);
     c.tri_flags = ((c.vertex_light || c.vertex_color) ? ZS_TRI_MODULATE : 0u) |
                   (r->shade.fog.enabled ? ZS_TRI_FOG : 0u);
 
@@ -375,49 +394,37 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     room = (uint32_t)r->cfg.max_vertices - base;
     vfit = m->vertex_count < room ? m->vertex_count : room;
     r->stats.verts_dropped += m->vertex_count - vfit;
-    for (i = 0; i < vfit; i++) {
-        zs_vert *v = &pool[base + i];
-        int64_t xc, yc, w;
-        to_clip(&c, i, &xc, &yc, &w);
-        if (r->priv.vshade)
-            r->priv.vshade[base + i] = vertex_shade(&c, i, w);
-        if (zs_outcode(r, xc, yc, w) & (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_GUARD))
-            v->z = ZS_VERT_UNPROJECTED;
-        else /* near <= w <= far: 32 bits */
-            zs_project(r, xc, yc, (int32_t)w, &v->x, &v->y, &v->z);
-    }
+    transform_vertices(&c, base, vfit);
     r->priv.n_verts = (uint16_t)(base + vfit);
     r->stats.verts_stored = r->priv.n_verts;
 
+    /* triangle t takes tag number tag0 + t (wrapping like the counter), so
+     * only the triangles that reach setup compute their tag */
+    tag0 = r->priv.tag_counter;
+    r->priv.tag_counter += m->triangle_count;
     for (t = 0; t < m->triangle_count; t++) {
-        uint16_t idx[3];
-        uint16_t tag = r->priv.next_tag;
-        /* tags run 1 .. 65535 and start again at 1 (0 means no triangle) */
-        r->priv.next_tag = (uint16_t)(tag == 65535u ? 1u : tag + 1u);
-        r->priv.tag_counter++;
+        const uint16_t *idx = m->indices + 3u * t;
+        uint32_t i0 = idx[0], i1 = idx[1], i2 = idx[2];
         const zs_vert *v0, *v1, *v2;
         int outcome;
         r->stats.tris_submitted++;
-        idx[0] = m->indices[3u * t];
-        idx[1] = m->indices[3u * t + 1u];
-        idx[2] = m->indices[3u * t + 2u];
-        if (idx[0] >= vfit || idx[1] >= vfit || idx[2] >= vfit) {
+        if (i0 >= vfit || i1 >= vfit || i2 >= vfit) {
             r->stats.tris_dropped++;
             continue;
         }
-        v0 = &pool[base + idx[0]];
-        v1 = &pool[base + idx[1]];
-        v2 = &pool[base + idx[2]];
+        v0 = &pool[base + i0];
+        v1 = &pool[base + i1];
+        v2 = &pool[base + i2];
         if ((v0->z | v1->z | v2->z) & ZS_VERT_UNPROJECTED) {
-            outcome = clip_and_setup(&c, base, idx, t, tag);
+            outcome = clip_and_setup(&c, base, t, tag_of(tag0, t));
         } else {
             int64_t area2 = zs_area2(v0, v1, v2);
             if (area2 >= 0) /* culled before lighting the face */
                 outcome = ZS_SETUP_CULLED;
             else
-                outcome = zs_setup_triangle(r, (uint16_t)(base + idx[0]),
-                                            (uint16_t)(base + idx[1]), (uint16_t)(base + idx[2]),
-                                            area2, face_color(&c, t, idx), tag);
+                outcome = zs_setup_triangle(r, (uint16_t)(base + i0), (uint16_t)(base + i1),
+                                            (uint16_t)(base + i2), area2, face_color(&c, t),
+                                            tag_of(tag0, t));
         }
         count_outcome(&r->stats, outcome);
     }

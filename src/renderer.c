@@ -45,6 +45,13 @@ static void *carve(uint8_t **cursor, size_t n)
     return p;
 }
 
+/* The default shading (zs_shade_default) and its pixel size. */
+static ZS_NOINLINE void reset_shading(zs_renderer *r)
+{
+    r->shade = zs_shade_default();
+    r->priv.bpp = (uint8_t)zs_format_bytes(r->shade.format);
+}
+
 zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_config *cfg)
 {
     zs_status st;
@@ -89,8 +96,7 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
     r->priv.guard = (int32_t)(32767u / (8u * dim)) - 1;
     if (r->priv.guard > ZS_GUARD_MAX)
         r->priv.guard = ZS_GUARD_MAX;
-    r->shade = zs_shade_default();
-    r->priv.bpp = (uint8_t)zs_format_bytes(r->shade.format);
+    reset_shading(r);
     r->priv.state = ZS_STATE_READY;
     return ZS_OK;
 }
@@ -140,12 +146,10 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
         r->priv.depth_scale = f < 8 * (f - n) ? (f * ((int64_t)1 << 30)) / (f - n) : 0;
     }
     memset(&r->stats, 0, sizeof r->stats);
-    r->shade = zs_shade_default();
-    r->priv.bpp = (uint8_t)zs_format_bytes(r->shade.format);
+    reset_shading(r);
     r->priv.n_verts = 0;
     r->priv.n_tris = 0;
     r->priv.tag_counter = 0;
-    r->priv.next_tag = 1;
     r->priv.next_row = 0;
     memset(r->priv.buckets, 0xFF, (size_t)r->cfg.height * 2u);
     r->priv.state = ZS_STATE_OPEN;

@@ -185,17 +185,18 @@ int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, int
     r->priv.n_tris++;
     r->stats.records++;
     if (r->priv.setup_hook) {
+        const zs_vert *v[3];
         int32_t xy[6];
         uint32_t z[3];
-        xy[0] = a->x;
-        xy[1] = a->y;
-        xy[2] = b->x;
-        xy[3] = b->y;
-        xy[4] = c->x;
-        xy[5] = c->y;
-        z[0] = a->z;
-        z[1] = b->z;
-        z[2] = c->z;
+        int k;
+        v[0] = a;
+        v[1] = b;
+        v[2] = c;
+        for (k = 0; k < 3; k++) {
+            xy[2 * k] = v[k]->x;
+            xy[2 * k + 1] = v[k]->y;
+            z[k] = v[k]->z;
+        }
         r->priv.setup_hook(r->priv.setup_hook_user, tag, xy, z);
     }
     return ZS_SETUP_STORED;

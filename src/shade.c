@@ -38,7 +38,7 @@ static uint32_t fog_mix(uint32_t c, uint32_t fog, uint32_t f)
 
 /* Colour at a vertex of triangle t, given its shade word, after modulation
  * and fog. */
-static uint32_t vertex_rgb(const zs_renderer *r, const zs_tri *t, uint32_t shade)
+static ZS_NOINLINE uint32_t vertex_rgb(const zs_renderer *r, const zs_tri *t, uint32_t shade)
 {
     uint32_t flags = t->color >> 24;
     uint32_t c = t->color & WHITE;

@@ -90,12 +90,22 @@ typedef char zs_check_edge[(sizeof(zs_edge) == ZS_EDGE_BYTES) ? 1 : -1];
 typedef char zs_check_active[(sizeof(zs_active) == ZS_ACTIVE_BYTES) ? 1 : -1];
 typedef char zs_check_acolor[(sizeof(zs_active_color) == ZS_ACTIVE_COLOR_BYTES) ? 1 : -1];
 
+/* Paths that real frames seldom take (clipping, needles, lighting set-up):
+ * kept out of line and built for size, so the hot code around them stays
+ * small and its stack frames do not carry their locals. */
+#if defined(__GNUC__)
+#define ZS_COLD __attribute__((cold, noinline))
+#define ZS_NOINLINE __attribute__((noinline)) /* off a caller's frame, or one copy */
+#else
+#define ZS_COLD
+#define ZS_NOINLINE
+#endif
+
 /* ---- integer helpers (fixed.c) ---- */
 static inline int32_t zs_asr32(int32_t v, unsigned s);
-int64_t zs_floor_div64(int64_t a, int64_t b);       /* b > 0 */
-int64_t zs_round_div64(int64_t a, int64_t b);       /* b > 0, half up */
 
 int32_t zs_sin_q30(zs_fixed deg);                   /* sine, Q2.30 */
+extern const zs_mat34 zs_identity34;                /* zs_mat34_identity() */
 /* A divisor prepared for repeated divisions: one hardware-free 64/32 division
  * instead of one per quotient (plane gradients share their triangle's area). */
 typedef struct zs_recip {
@@ -115,6 +125,8 @@ int64_t zs_mul_q16_wide(int64_t a, int32_t b);
  * toward zero, or rounded half away from zero when round is non-zero.
  * Exact through a 128-bit product where a * b does not fit 64 bits. */
 int64_t zs_muldiv64(int64_t a, int64_t b, int64_t c, int round);
+/* out = a x b, exact (each product in 64 bits). */
+void zs_cross3(const int32_t a[3], const int32_t b[3], int64_t out[3]);
 /* round(sum a[i] * b[i] / 65536) without overflow for any int32 inputs. */
 int64_t zs_dot3_q16(const int32_t a[3], const int32_t b[3]);
 /* Shrink a vector by powers of two until every |component| < limit. */
@@ -170,7 +182,7 @@ unsigned zs_outcode(const zs_renderer *r, int64_t xc, int64_t yc, int64_t w);
 int zs_activate(zs_renderer *r, uint16_t tri, int32_t y);
 /* Sets the row constant of a steep plane exactly: the true depth at the
  * centre of column xa on row y when the triangle covers it (xa: its first
- * covered column there, clamped to the screen). */
+ * covered column there, clamped to the screen; 0 <= y <= height). */
 void zs_anchor_depth(const zs_renderer *r, zs_active *a, int32_t xa, int32_t y);
 /* Appends the lower short edge of active triangle ai, starting at row y. */
 void zs_continue_edge(zs_renderer *r, uint16_t ai, int32_t y);
@@ -307,7 +319,8 @@ static inline void zs_fill2(uint8_t *p, int n, uint8_t b0, uint8_t b1)
     }
 }
 
-static inline void zs_fill_flat(uint8_t *row, int x0, int x1, unsigned bpp, uint32_t pixel)
+static inline void zs_fill_flat_body(uint8_t *row, int x0, int x1, unsigned bpp,
+                                     uint32_t pixel)
 {
     union {
         uint32_t w;
@@ -329,6 +342,17 @@ static inline void zs_fill_flat(uint8_t *row, int x0, int x1, unsigned bpp, uint
         }
     }
 }
+
+/* Pixels x0 .. x1-1 of row set to a packed pixel. Built for size, one copy
+ * out of line (format.c) serves both visibility modes; else inline. */
+#if defined(__OPTIMIZE_SIZE__)
+void zs_fill_flat(uint8_t *row, int x0, int x1, unsigned bpp, uint32_t pixel);
+#else
+static inline void zs_fill_flat(uint8_t *row, int x0, int x1, unsigned bpp, uint32_t pixel)
+{
+    zs_fill_flat_body(row, x0, x1, bpp, pixel);
+}
+#endif
 
 
 #endif

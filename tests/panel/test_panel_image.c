@@ -123,7 +123,7 @@ static void test_ramwrc_chunks(void **state)
     (void)state;
     for (i = 0; i < zs_panel_count(); i++) {
         const zs_panel_desc *d = zs_panel_at(i);
-        if (d->proto != ZS_PANEL_DCS)
+        if (d->ops != &zs_panel_ops_dcs)
             continue;
         for (f = 0; f < 2; f++)
             if (zs_panel_bytes_per_pixel(d, pt_formats[f]))

@@ -27,6 +27,12 @@
  * Ordering rule for async ports: zs_bus_pixels() marks the bus busy *before*
  * calling the port's `pixels`, so a completion that arrives immediately (even
  * from inside `pixels`) is never lost.
+ *
+ * Failures: a port function that returns non-zero, a transfer the port ends
+ * with zs_bus_pixels_failed(), and a completion that does not come within the
+ * wait limit (zs_bus_set_wait_limit; none by default) each give a status
+ * (zs_bus_status, named by zs_bus_strerror) instead of a wrong picture or a
+ * hang.
  */
 #ifndef ZSPAN_BUS_H
 #define ZSPAN_BUS_H

@@ -95,7 +95,7 @@ typedef struct zs_bus {
     /* How long zs_bus_wait waits for a transfer (see zs_bus_set_wait_limit);
      * 0 = for ever (the default). */
     uint32_t wait_limit;
-    zs_bus_clock_fn wait_clock;
+    zs_bus_clock_fn wait_clock;   /* the limit's clock; NULL: the limit counts polls */
     volatile uint8_t busy;    /* 1 while an async pixel transfer is in flight */
     volatile uint8_t fault;   /* an async transfer failed, not reported yet */
     uint8_t timed_out;        /* the transfer in flight was given up on */

@@ -1,27 +1,44 @@
 /* zspan panel driver: the parts shared by all command sets (geometry,
- * rotation, windows, pixel writes) and dispatch to the DCS or SSD1351 code. */
+ * rotation, windows, pixel writes). What goes on the wire for each step
+ * comes from the description's operations table (dcs.c, ssd1351.c). */
 #include "panel_internal.h"
 
 const char *zs_panel_strerror(zs_panel_status s)
 {
+    /* The texts are the header's comments (tests/panel/test_panel_contract.c
+     * reads panel.h and compares). */
     switch (s) {
     case ZS_PANEL_OK: return "ok";
-    case ZS_PANEL_ERR_NULL: return "NULL panel, description, bus or buffer";
+    case ZS_PANEL_ERR_NULL: return "NULL panel, description, bus, renderer or buffer";
     case ZS_PANEL_ERR_IO: return "the bus reported a failure";
     case ZS_PANEL_ERR_FORMAT: return "pixel format not supported by this panel";
     case ZS_PANEL_ERR_ROTATION: return "rotation not 0..3";
     case ZS_PANEL_ERR_WINDOW: return "empty window or outside the visible area";
-    case ZS_PANEL_ERR_STATE: return "panel not initialised, or pixels without an open window";
+    case ZS_PANEL_ERR_STATE:
+        return "panel not initialised, or pixels without an open window or past its end";
     case ZS_PANEL_ERR_DESC: return "inconsistent panel description";
-    case ZS_PANEL_ERR_BUFFER: return "buffer too small or not whole pixels";
-    case ZS_PANEL_ERR_RENDER: return "the renderer failed (see render_status)";
+    case ZS_PANEL_ERR_BUFFER:
+        return "buffer smaller than one row, band of no rows, or not whole pixels";
+    case ZS_PANEL_ERR_RENDER: return "zs_render_rows failed (see render_status)";
+    case ZS_PANEL_ERR_TIMEOUT:
+        return "the bus gave up waiting for a pixel transfer (wait limit)";
+    case ZS_PANEL_ERR_SIZE: return "renderer size differs from the panel size at its rotation";
+    case ZS_PANEL_ERR_FRAME_FORMAT: return "the frame's pixel format is not the panel's";
+    case ZS_PANEL_STATUS_COUNT: break;
     }
     return "unknown panel status";
 }
 
+zs_panel_status zs__panel_from_bus(zs_bus_status s)
+{
+    if (s == ZS_BUS_OK)
+        return ZS_PANEL_OK;
+    return s == ZS_BUS_ERR_TIMEOUT ? ZS_PANEL_ERR_TIMEOUT : ZS_PANEL_ERR_IO;
+}
+
 zs_panel_status zs__panel_cmd(zs_panel *p, uint8_t cmd, const uint8_t *params, size_t n)
 {
-    return zs_bus_cmd(p->bus, cmd, params, n) == ZS_BUS_OK ? ZS_PANEL_OK : ZS_PANEL_ERR_IO;
+    return zs__panel_from_bus(zs_bus_cmd(p->bus, cmd, params, n));
 }
 
 zs_panel_status zs__panel_run_records(zs_panel *p, const uint8_t *rec, size_t len)
@@ -122,6 +139,22 @@ static zs_panel_status apply_geometry(zs_panel *p, unsigned rotation)
     return ZS_PANEL_OK;
 }
 
+/* A table the common code can drive: the required operations exist. */
+static int ops_complete(const zs_panel_ops *o)
+{
+    return o != NULL && o->init != NULL && o->format != NULL && o->orient != NULL &&
+           o->invert != NULL && o->display != NULL && o->window != NULL;
+}
+
+/* Whether the panel can take `format`: one the module supports and its
+ * command set has the register values for. */
+static zs_panel_status format_ok(const zs_panel_desc *desc, zs_format format)
+{
+    if (zs_panel_bytes_per_pixel(desc, format) == 0)
+        return ZS_PANEL_ERR_FORMAT;
+    return desc->ops->check != NULL ? desc->ops->check(desc, format) : ZS_PANEL_OK;
+}
+
 zs_panel_status zs_panel_init(zs_panel *p, const zs_panel_desc *desc, zs_bus *bus,
                               zs_format format, unsigned rotation)
 {
@@ -134,58 +167,70 @@ zs_panel_status zs_panel_init(zs_panel *p, const zs_panel_desc *desc, zs_bus *bu
     p->bus = bus;
     p->inverted = 0;
     p->use_ramwrc = 0;
+    p->scratch_next = 0;
     p->window_bytes = 0;
     p->window_total = 0;
-    if (zs_panel_bytes_per_pixel(desc, format) == 0)
-        return ZS_PANEL_ERR_FORMAT;
-    p->format = format;
-    if (desc->proto == ZS_PANEL_DCS) {
-        if ((format == ZS_FMT_RGB666 ? desc->colmod_666 : desc->colmod_565) == 0)
-            return ZS_PANEL_ERR_DESC;
-    } else if (desc->proto != ZS_PANEL_SSD1351) {
+    if (!ops_complete(desc->ops))
         return ZS_PANEL_ERR_DESC;
-    }
+    if ((s = format_ok(desc, format)) != ZS_PANEL_OK)
+        return s;
+    p->format = format;
     if ((s = apply_geometry(p, rotation)) != ZS_PANEL_OK)
         return s;
-    s = desc->proto == ZS_PANEL_DCS ? zs__dcs_init(p) : zs__ssd1351_init(p);
-    if (s != ZS_PANEL_OK)
+    if ((s = desc->ops->init(p)) != ZS_PANEL_OK)
         return s;
     p->ready = 1;
     return ZS_PANEL_OK;
 }
 
+/* Common checks of the functions that need an initialised panel. */
+static zs_panel_status ready(const zs_panel *p)
+{
+    if (p == NULL || p->desc == NULL || p->bus == NULL)
+        return ZS_PANEL_ERR_NULL;
+    return p->ready ? ZS_PANEL_OK : ZS_PANEL_ERR_STATE;
+}
+
 zs_panel_status zs_panel_set_rotation(zs_panel *p, unsigned rotation)
 {
     zs_panel_status s;
-    if (p == NULL || p->desc == NULL)
-        return ZS_PANEL_ERR_NULL;
-    if (!p->ready)
-        return ZS_PANEL_ERR_STATE;
+    if ((s = ready(p)) != ZS_PANEL_OK)
+        return s;
     if ((s = apply_geometry(p, rotation)) != ZS_PANEL_OK)
         return s;
     p->window_bytes = 0;
-    return p->desc->proto == ZS_PANEL_DCS ? zs__dcs_orient(p) : zs__ssd1351_orient(p);
+    return p->desc->ops->orient(p);
+}
+
+zs_panel_status zs_panel_set_format(zs_panel *p, zs_format format)
+{
+    zs_panel_status s;
+    if ((s = ready(p)) != ZS_PANEL_OK)
+        return s;
+    if ((s = format_ok(p->desc, format)) != ZS_PANEL_OK)
+        return s;
+    p->format = format;
+    p->window_bytes = 0; /* the open window was counted in the old format */
+    return p->desc->ops->format(p);
 }
 
 zs_panel_status zs_panel_set_inversion(zs_panel *p, int on)
 {
-    if (p == NULL || p->desc == NULL)
-        return ZS_PANEL_ERR_NULL;
-    if (!p->ready)
-        return ZS_PANEL_ERR_STATE;
+    zs_panel_status s;
+    if ((s = ready(p)) != ZS_PANEL_OK)
+        return s;
     p->inverted = on ? 1u : 0u;
     p->window_bytes = 0;
-    return p->desc->proto == ZS_PANEL_DCS ? zs__dcs_invert(p) : zs__ssd1351_invert(p);
+    return p->desc->ops->invert(p);
 }
 
 zs_panel_status zs_panel_display_on(zs_panel *p, int on)
 {
-    if (p == NULL || p->desc == NULL)
-        return ZS_PANEL_ERR_NULL;
-    if (!p->ready)
-        return ZS_PANEL_ERR_STATE;
+    zs_panel_status s;
+    if ((s = ready(p)) != ZS_PANEL_OK)
+        return s;
     p->window_bytes = 0;
-    return p->desc->proto == ZS_PANEL_DCS ? zs__dcs_display(p, on) : zs__ssd1351_display(p, on);
+    return p->desc->ops->display(p, on);
 }
 
 zs_panel_status zs_panel_backlight(zs_panel *p, uint8_t level)
@@ -201,10 +246,8 @@ zs_panel_status zs_panel_window(zs_panel *p, uint16_t x0, uint16_t y0, uint16_t 
     zs_panel_status s;
     uint16_t xs, ys, xe, ye;
 
-    if (p == NULL || p->desc == NULL)
-        return ZS_PANEL_ERR_NULL;
-    if (!p->ready)
-        return ZS_PANEL_ERR_STATE;
+    if ((s = ready(p)) != ZS_PANEL_OK)
+        return s;
     if (x0 >= x1 || y0 >= y1 || x1 > p->width || y1 > p->height)
         return ZS_PANEL_ERR_WINDOW;
     xs = (uint16_t)(x0 + p->x_offset);
@@ -212,9 +255,7 @@ zs_panel_status zs_panel_window(zs_panel *p, uint16_t x0, uint16_t y0, uint16_t 
     ys = (uint16_t)(y0 + p->y_offset);
     ye = (uint16_t)(y1 - 1u + p->y_offset);
     p->window_bytes = 0;
-    s = p->desc->proto == ZS_PANEL_DCS ? zs__dcs_window(p, xs, ys, xe, ye)
-                                       : zs__ssd1351_window(p, xs, ys, xe, ye);
-    if (s != ZS_PANEL_OK)
+    if ((s = p->desc->ops->window(p, xs, ys, xe, ye)) != ZS_PANEL_OK)
         return s;
     p->window_total = (uint32_t)(x1 - x0) * (uint32_t)(y1 - y0) *
                       zs_panel_bytes_per_pixel(p->desc, p->format);
@@ -222,34 +263,67 @@ zs_panel_status zs_panel_window(zs_panel *p, uint16_t x0, uint16_t y0, uint16_t 
     return ZS_PANEL_OK;
 }
 
-zs_panel_status zs_panel_write(zs_panel *p, uint8_t *data, size_t n)
+/* Checks shared by both writes, then the command set's per-write step. */
+static zs_panel_status write_begin(zs_panel *p, const uint8_t *data, size_t n)
 {
-    zs_panel_status s;
-
-    if (p == NULL || p->desc == NULL || (data == NULL && n > 0))
+    if (p == NULL || p->desc == NULL || p->bus == NULL || (data == NULL && n > 0))
         return ZS_PANEL_ERR_NULL;
     if (!p->ready || p->window_bytes == 0 || n > p->window_bytes)
         return ZS_PANEL_ERR_STATE;
-    if (n == 0)
+    if (n == 0 || p->desc->ops->write_begin == NULL)
         return ZS_PANEL_OK;
-    if (p->use_ramwrc && p->desc->proto == ZS_PANEL_DCS) {
-        unsigned bpp = zs_panel_bytes_per_pixel(p->desc, p->format);
-        if (n % bpp != 0 || (p->window_total - p->window_bytes) % bpp != 0)
-            return ZS_PANEL_ERR_BUFFER;
-        if (p->window_bytes != p->window_total &&
-            (s = zs__panel_cmd(p, ZS_DCS_RAMWRC, NULL, 0)) != ZS_PANEL_OK)
+    return p->desc->ops->write_begin(p, n);
+}
+
+static zs_panel_encode_fn encoder_of(const zs_panel *p)
+{
+    return p->desc->ops->encoder != NULL ? p->desc->ops->encoder(p) : NULL;
+}
+
+zs_panel_status zs_panel_write(zs_panel *p, const uint8_t *data, size_t n)
+{
+    zs_panel_status s;
+    zs_panel_encode_fn enc;
+
+    if ((s = write_begin(p, data, n)) != ZS_PANEL_OK || n == 0)
+        return s;
+    enc = encoder_of(p);
+    if (enc == NULL) {
+        s = zs__panel_from_bus(zs_bus_pixels(p->bus, data, n));
+        if (s == ZS_PANEL_OK)
+            p->window_bytes -= (uint32_t)n;
+        return s;
+    }
+    /* The caller's bytes stay untouched: convert piece by piece, alternating
+     * between the two scratch buffers. The bus has at most one transfer in
+     * flight, the piece sent last, so the buffer filled next is free. */
+    while (n > 0) {
+        size_t piece = n < ZS_PANEL_SCRATCH_BYTES ? n : ZS_PANEL_SCRATCH_BYTES;
+        uint8_t *buf = p->scratch[p->scratch_next];
+        enc(buf, data, piece);
+        if ((s = zs__panel_from_bus(zs_bus_pixels(p->bus, buf, piece))) != ZS_PANEL_OK)
             return s;
+        p->scratch_next ^= 1u;
+        p->window_bytes -= (uint32_t)piece;
+        data += piece;
+        n -= piece;
     }
-    if (p->desc->proto == ZS_PANEL_SSD1351 && p->format == ZS_FMT_RGB666) {
-        /* The SSD1351 takes 18-bit colour as three bytes with the value in bits
-         * 5..0; zspan's RGB666 holds it in bits 7..2. (The caller owns data:
-         * passing a buffer the bus still owns is already a contract breach.) */
-        size_t i;
-        for (i = 0; i < n; i++)
-            data[i] = (uint8_t)(data[i] >> 2);
-    }
-    if (zs_bus_pixels(p->bus, data, n) != ZS_BUS_OK)
-        return ZS_PANEL_ERR_IO;
+    return ZS_PANEL_OK;
+}
+
+zs_panel_status zs_panel_write_inplace(zs_panel *p, uint8_t *data, size_t n)
+{
+    zs_panel_status s;
+    zs_panel_encode_fn enc;
+
+    if ((s = write_begin(p, data, n)) != ZS_PANEL_OK || n == 0)
+        return s;
+    /* The caller owns data (passing a buffer the bus still owns is already a
+     * breach of the bus contract), so it may be converted where it lies. */
+    if ((enc = encoder_of(p)) != NULL)
+        enc(data, data, n);
+    if ((s = zs__panel_from_bus(zs_bus_pixels(p->bus, data, n))) != ZS_PANEL_OK)
+        return s;
     p->window_bytes -= (uint32_t)n;
     return ZS_PANEL_OK;
 }

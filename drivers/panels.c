@@ -115,53 +115,149 @@ static const uint8_t ssd1351_init[] = {
     0xB6, 1, 0x01,                         /* second precharge period */
 };
 
-#define INIT(a) (a), (uint16_t)sizeof(a)
-
-/* Field order: name, proto, madctl, invert, formats, colmod565, colmod666,
- * width, height, ram_width, ram_height, col_offset, row_offset, clock, init. */
+/* Designated initializers: every field named, left-out fields are 0. */
+#define INIT(a) .init = (a), .init_len = (uint16_t)sizeof(a)
 
 /* 1.3"/1.54" IPS: 240x240 at the top of the 240x320 RAM (80 rows unused:
  * the offset shows up as RASET 80..319 when MY is set). */
 const zs_panel_desc zs_panel_st7789_240x240 = {
-    "st7789-240x240", ZS_PANEL_DCS, 0x00, 1, FMT_565_666, 0x55, 0x66,
-    240, 240, 240, 320, 0, 0, 62500000u, INIT(st7789_init)};
+    .name = "st7789-240x240",
+    .ops = &zs_panel_ops_dcs,
+    .madctl = 0x00,
+    .invert = 1,
+    .formats = FMT_565_666,
+    .colmod_565 = 0x55,
+    .colmod_666 = 0x66,
+    .width = 240,
+    .height = 240,
+    .ram_width = 240,
+    .ram_height = 320,
+    .max_spi_hz = 62500000u,
+    INIT(st7789_init),
+};
 
 /* 2.0"/2.4" IPS: the whole 240x320 RAM. */
 const zs_panel_desc zs_panel_st7789_240x320 = {
-    "st7789-240x320", ZS_PANEL_DCS, 0x00, 1, FMT_565_666, 0x55, 0x66,
-    240, 320, 240, 320, 0, 0, 62500000u, INIT(st7789_init)};
+    .name = "st7789-240x320",
+    .ops = &zs_panel_ops_dcs,
+    .madctl = 0x00,
+    .invert = 1,
+    .formats = FMT_565_666,
+    .colmod_565 = 0x55,
+    .colmod_666 = 0x66,
+    .width = 240,
+    .height = 320,
+    .ram_width = 240,
+    .ram_height = 320,
+    .max_spi_hz = 62500000u,
+    INIT(st7789_init),
+};
 
 /* 1.14" IPS: 135x240 centred in the 240x320 RAM (columns 52..186, rows 40..279). */
 const zs_panel_desc zs_panel_st7789_135x240 = {
-    "st7789-135x240", ZS_PANEL_DCS, 0x00, 1, FMT_565_666, 0x55, 0x66,
-    135, 240, 240, 320, 52, 40, 62500000u, INIT(st7789_init)};
+    .name = "st7789-135x240",
+    .ops = &zs_panel_ops_dcs,
+    .madctl = 0x00,
+    .invert = 1,
+    .formats = FMT_565_666,
+    .colmod_565 = 0x55,
+    .colmod_666 = 0x66,
+    .width = 135,
+    .height = 240,
+    .ram_width = 240,
+    .ram_height = 320,
+    .col_offset = 52,
+    .row_offset = 40,
+    .max_spi_hz = 62500000u,
+    INIT(st7789_init),
+};
 
 /* 2.2"-2.8" TN modules: BGR glass, source outputs wired mirrored (MX). */
 const zs_panel_desc zs_panel_ili9341 = {
-    "ili9341", ZS_PANEL_DCS, (uint8_t)(ZS_MADCTL_MX | ZS_MADCTL_BGR), 0, FMT_565_666,
-    0x55, 0x66, 240, 320, 240, 320, 0, 0, 10000000u, INIT(ili9341_init)};
+    .name = "ili9341",
+    .ops = &zs_panel_ops_dcs,
+    .madctl = (uint8_t)(ZS_MADCTL_MX | ZS_MADCTL_BGR),
+    .invert = 0,
+    .formats = FMT_565_666,
+    .colmod_565 = 0x55,
+    .colmod_666 = 0x66,
+    .width = 240,
+    .height = 320,
+    .ram_width = 240,
+    .ram_height = 320,
+    .max_spi_hz = 10000000u,
+    INIT(ili9341_init),
+};
 
 /* 1.8" TN: ST7735S with 132x162 RAM, glass mounted turned 180 degrees
  * (rotation 0 needs MX|MY), visible area at column 2, row 1. */
 const zs_panel_desc zs_panel_st7735_128x160 = {
-    "st7735-128x160", ZS_PANEL_DCS, (uint8_t)(ZS_MADCTL_MX | ZS_MADCTL_MY), 0, FMT_565_666,
-    0x05, 0x06, 128, 160, 132, 162, 2, 1, 15000000u, INIT(st7735_init)};
+    .name = "st7735-128x160",
+    .ops = &zs_panel_ops_dcs,
+    .madctl = (uint8_t)(ZS_MADCTL_MX | ZS_MADCTL_MY),
+    .invert = 0,
+    .formats = FMT_565_666,
+    .colmod_565 = 0x05,
+    .colmod_666 = 0x06,
+    .width = 128,
+    .height = 160,
+    .ram_width = 132,
+    .ram_height = 162,
+    .col_offset = 2,
+    .row_offset = 1,
+    .max_spi_hz = 15000000u,
+    INIT(st7735_init),
+};
 
 /* 1.28" round IPS: BGR glass, needs inversion. */
 const zs_panel_desc zs_panel_gc9a01 = {
-    "gc9a01", ZS_PANEL_DCS, ZS_MADCTL_BGR, 1, FMT_565_666, 0x05, 0x06,
-    240, 240, 240, 240, 0, 0, 50000000u, INIT(gc9a01_init)};
+    .name = "gc9a01",
+    .ops = &zs_panel_ops_dcs,
+    .madctl = ZS_MADCTL_BGR,
+    .invert = 1,
+    .formats = FMT_565_666,
+    .colmod_565 = 0x05,
+    .colmod_666 = 0x06,
+    .width = 240,
+    .height = 240,
+    .ram_width = 240,
+    .ram_height = 240,
+    .max_spi_hz = 50000000u,
+    INIT(gc9a01_init),
+};
 
 /* 3.5" TN: BGR glass, mirrored sources; 18 bpp only over SPI. */
 const zs_panel_desc zs_panel_ili9488 = {
-    "ili9488", ZS_PANEL_DCS, (uint8_t)(ZS_MADCTL_MX | ZS_MADCTL_BGR), 0,
-    FMT_BIT(ZS_FMT_RGB666), 0x00, 0x66, 320, 480, 320, 480, 0, 0, 20000000u,
-    INIT(ili9488_init)};
+    .name = "ili9488",
+    .ops = &zs_panel_ops_dcs,
+    .madctl = (uint8_t)(ZS_MADCTL_MX | ZS_MADCTL_BGR),
+    .invert = 0,
+    .formats = FMT_BIT(ZS_FMT_RGB666),
+    .colmod_565 = 0x00,
+    .colmod_666 = 0x66,
+    .width = 320,
+    .height = 480,
+    .ram_width = 320,
+    .ram_height = 480,
+    .max_spi_hz = 20000000u,
+    INIT(ili9488_init),
+};
 
-/* 1.5" OLED: COM scan reversed (MY) and colour order C-B-A (BGR) at rotation 0. */
+/* 1.5" OLED: COM scan reversed (MY) and colour order C-B-A (BGR) at rotation 0.
+ * No COLMOD: the colour depth is part of the remap register. */
 const zs_panel_desc zs_panel_ssd1351 = {
-    "ssd1351", ZS_PANEL_SSD1351, (uint8_t)(ZS_MADCTL_MY | ZS_MADCTL_BGR), 0, FMT_565_666,
-    0, 0, 128, 128, 128, 128, 0, 0, 20000000u, INIT(ssd1351_init)};
+    .name = "ssd1351",
+    .ops = &zs_panel_ops_ssd1351,
+    .madctl = (uint8_t)(ZS_MADCTL_MY | ZS_MADCTL_BGR),
+    .invert = 0,
+    .formats = FMT_565_666,
+    .width = 128,
+    .height = 128,
+    .ram_width = 128,
+    .ram_height = 128,
+    .max_spi_hz = 20000000u,
+    INIT(ssd1351_init),
+};
 
 static const zs_panel_desc *const all_panels[] = {
     &zs_panel_st7789_240x240, &zs_panel_st7789_240x320, &zs_panel_st7789_135x240,

@@ -1,4 +1,5 @@
-/* SSD1351 128x128 colour OLED driver (Solomon command set).
+/* SSD1351 128x128 colour OLED driver (Solomon command set): the
+ * zs_panel_ops_ssd1351 table.
  *
  * Orientation uses the same abstract MY/MX/MV/BGR bits as MADCTL, mapped to
  * the remap register 0xA0: MV -> vertical address increment, MX -> column
@@ -10,7 +11,8 @@
 #define SSD1351_RESET_MS 1u
 #define SSD1351_DISPLAY_ON_MS 100u
 
-uint8_t zs__ssd1351_remap(const zs_panel *p)
+/* The remap (0xA0) parameter for the panel's orientation and format. */
+static uint8_t ssd1351_remap(const zs_panel *p)
 {
     uint8_t m = p->madctl;
     uint8_t v = ZS_SSD1351_RM_COMSPLIT;
@@ -31,7 +33,23 @@ static zs_panel_status cmd1(zs_panel *p, uint8_t cmd, uint8_t v)
     return zs__panel_cmd(p, cmd, &v, 1);
 }
 
-zs_panel_status zs__ssd1351_init(zs_panel *p)
+static zs_panel_status ssd1351_orient(zs_panel *p)
+{
+    return cmd1(p, ZS_SSD1351_REMAP, ssd1351_remap(p));
+}
+
+static zs_panel_status ssd1351_invert(zs_panel *p)
+{
+    int on = (p->desc->invert != 0) != (p->inverted != 0);
+    return zs__panel_cmd(p, on ? ZS_SSD1351_INVERSE : ZS_SSD1351_NORMAL, NULL, 0);
+}
+
+static zs_panel_status ssd1351_display(zs_panel *p, int on)
+{
+    return zs__panel_cmd(p, on ? ZS_SSD1351_SLEEP_OFF : ZS_SSD1351_SLEEP_ON, NULL, 0);
+}
+
+static zs_panel_status ssd1351_init(zs_panel *p)
 {
     zs_panel_status s;
 
@@ -51,34 +69,18 @@ zs_panel_status zs__ssd1351_init(zs_panel *p)
         return s;
     if ((s = cmd1(p, ZS_SSD1351_STARTLINE, 0x00)) != ZS_PANEL_OK)
         return s;
-    if ((s = zs__ssd1351_orient(p)) != ZS_PANEL_OK)
+    if ((s = ssd1351_orient(p)) != ZS_PANEL_OK)
         return s;
-    if ((s = zs__ssd1351_invert(p)) != ZS_PANEL_OK)
+    if ((s = ssd1351_invert(p)) != ZS_PANEL_OK)
         return s;
-    if ((s = zs__ssd1351_display(p, 1)) != ZS_PANEL_OK)
+    if ((s = ssd1351_display(p, 1)) != ZS_PANEL_OK)
         return s;
     zs_bus_delay(p->bus, SSD1351_DISPLAY_ON_MS);
     return ZS_PANEL_OK;
 }
 
-zs_panel_status zs__ssd1351_orient(zs_panel *p)
-{
-    return cmd1(p, ZS_SSD1351_REMAP, zs__ssd1351_remap(p));
-}
-
-zs_panel_status zs__ssd1351_invert(zs_panel *p)
-{
-    int on = (p->desc->invert != 0) != (p->inverted != 0);
-    return zs__panel_cmd(p, on ? ZS_SSD1351_INVERSE : ZS_SSD1351_NORMAL, NULL, 0);
-}
-
-zs_panel_status zs__ssd1351_display(zs_panel *p, int on)
-{
-    return zs__panel_cmd(p, on ? ZS_SSD1351_SLEEP_OFF : ZS_SSD1351_SLEEP_ON, NULL, 0);
-}
-
-zs_panel_status zs__ssd1351_window(zs_panel *p, uint16_t xs, uint16_t ys, uint16_t xe,
-                                   uint16_t ye)
+static zs_panel_status ssd1351_window(zs_panel *p, uint16_t xs, uint16_t ys, uint16_t xe,
+                                      uint16_t ye)
 {
     uint8_t c[2], r[2];
     zs_panel_status s;
@@ -100,3 +102,30 @@ zs_panel_status zs__ssd1351_window(zs_panel *p, uint16_t xs, uint16_t ys, uint16
         return s;
     return zs__panel_cmd(p, ZS_SSD1351_WRITERAM, NULL, 0);
 }
+
+/* At 262k colours the SSD1351 takes each channel's 6 bits in bits 5..0;
+ * zspan's RGB666 holds them in bits 7..2. */
+static void ssd1351_encode_666(uint8_t *dst, const uint8_t *src, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++)
+        dst[i] = (uint8_t)(src[i] >> 2);
+}
+
+static zs_panel_encode_fn ssd1351_encoder(const zs_panel *p)
+{
+    return p->format == ZS_FMT_RGB666 ? ssd1351_encode_666 : NULL;
+}
+
+const zs_panel_ops zs_panel_ops_ssd1351 = {
+    .name = "SSD1351",
+    .check = NULL, /* no per-module register values: any format in desc->formats works */
+    .init = ssd1351_init,
+    .format = ssd1351_orient, /* the colour depth lives in the remap register */
+    .orient = ssd1351_orient,
+    .invert = ssd1351_invert,
+    .display = ssd1351_display,
+    .window = ssd1351_window,
+    .write_begin = NULL,
+    .encoder = ssd1351_encoder,
+};

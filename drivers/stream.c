@@ -2,6 +2,18 @@
  * the bus, and account for the frame's wire traffic. */
 #include "panel_internal.h"
 
+/* The renderer's size and the frame's format. The core has no accessors for
+ * them; zs_renderer is public so it can be allocated statically, and its
+ * config and shading are the caller's own zs_config / zs_shade_params. */
+static zs_panel_status frame_fits(const zs_panel *p, const zs_renderer *r)
+{
+    if (r->cfg.width != p->width || r->cfg.height != p->height)
+        return ZS_PANEL_ERR_SIZE;
+    if (r->shade.format != p->format)
+        return ZS_PANEL_ERR_FRAME_FORMAT;
+    return ZS_PANEL_OK;
+}
+
 zs_panel_status zs_panel_stream(zs_panel *p, zs_renderer *r, uint8_t *buf0, uint8_t *buf1,
                                 size_t buf_bytes, int band_rows, const zs_wire_model *wire,
                                 zs_panel_frame_stats *stats)
@@ -25,6 +37,8 @@ zs_panel_status zs_panel_stream(zs_panel *p, zs_renderer *r, uint8_t *buf0, uint
     st->render_status = ZS_OK;
     if (!p->ready)
         return ZS_PANEL_ERR_STATE;
+    if ((s = frame_fits(p, r)) != ZS_PANEL_OK)
+        return s;
     bpp = zs_panel_bytes_per_pixel(p->desc, p->format);
     stride = (size_t)p->width * bpp;
     if (bpp == 0 || buf_bytes < stride || band_rows < 1)
@@ -47,27 +61,29 @@ zs_panel_status zs_panel_stream(zs_panel *p, zs_renderer *r, uint8_t *buf0, uint
          * lives in the buffer we are about to render into must we wait. */
         if (b == last_sent && !zs_bus_idle(p->bus)) {
             st->wire_waits++;
-            zs_bus_wait(p->bus);
+            if ((s = zs__panel_from_bus(zs_bus_wait(p->bus))) != ZS_PANEL_OK)
+                return s;
         }
         rs = zs_render_rows(r, y, rows, b, stride);
         st->render_status = rs;
         if (rs != ZS_OK) {
-            zs_bus_wait(p->bus);
+            (void)zs_bus_wait(p->bus); /* the render failure is the one to report */
             return ZS_PANEL_ERR_RENDER;
         }
         if (b != last_sent && !zs_bus_idle(p->bus))
             st->wire_waits++; /* band ready before the wire was free */
-        if ((s = zs_panel_write(p, b, n)) != ZS_PANEL_OK) {
-            zs_bus_wait(p->bus);
+        /* Our own buffer, rendered for this band only: convert in place. */
+        if ((s = zs_panel_write_inplace(p, b, n)) != ZS_PANEL_OK) {
+            (void)zs_bus_wait(p->bus);
             return s;
         }
         last_sent = b;
         st->bands++;
         k++;
     }
-    zs_bus_wait(p->bus);
+    s = zs__panel_from_bus(zs_bus_wait(p->bus));
     st->bus = zs_bus_counters_diff(&p->bus->count, &before);
     st->bytes = zs_bus_counters_bytes(&st->bus);
     st->wire_ns = wire != NULL ? zs_wire_time_ns(&st->bus, wire) : 0;
-    return ZS_PANEL_OK;
+    return s;
 }

@@ -338,7 +338,7 @@ int sim_panel_main(int argc, char **argv)
     }
     if (!o.quiet)
         printf("panel %s (%s), %ux%u at rotation %ld, %s, %s bus%s, SPI %.1f MHz, band %ld\n",
-               d->name, d->proto == ZS_PANEL_DCS ? "MIPI DCS" : "SSD1351", lcd.width,
+               d->name, d->ops->name, lcd.width,
                lcd.height, o.rotation, o.format == ZS_FMT_RGB565_BE ? "RGB565" : "RGB666",
                o.async ? "async (DMA)" : "blocking",
                o.max_transfer ? " (chunked)" : "", wire.clock_hz / 1e6, o.band);

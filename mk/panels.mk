@@ -27,8 +27,9 @@ PANELS_TEST_BINS := $(patsubst tests/panel/%.c,$(BUILD)/tests/panel/%,$(PANELS_T
 # Recursive: pkg-config runs in recipes, after `make deps`.
 PANELS_PNG_CFLAGS = $(shell $(PKG_CONFIG) --cflags libpng 2>/dev/null)
 PANELS_PNG_LIBS = $(shell $(PKG_CONFIG) --libs libpng 2>/dev/null)
+# ZT_TOP_DIR: test_panel_contract reads the headers (status texts).
 PANELS_TEST_CFLAGS = $(TEST_CFLAGS) -D_POSIX_C_SOURCE=200809L -Ihost_sim/emu -Ihost_sim \
-                     $(PANELS_PNG_CFLAGS)
+                     -DZT_TOP_DIR='"$(CURDIR)"' $(PANELS_PNG_CFLAGS)
 PANELS_TEST_LIBS = $(PANELS_PNG_LIBS) -lSDL2 -lX11 $(TEST_LIBS)
 
 ALL_TARGETS += $(PANELS_LIB) $(PANELS_ASAN_LIB)

@@ -1,7 +1,8 @@
 /*
- * zspan panel drivers: one generic MIPI-DCS driver driven by a constant data
- * table per panel, plus the SSD1351 OLED (its own command set), and a frame
- * streamer that renders the next band while the previous one is on the bus.
+ * zspan panel drivers: common code (geometry, rotation, windows, pixel
+ * writes) over one operations table per controller command set (MIPI DCS,
+ * SSD1351), a constant data table per module, and a frame streamer that
+ * renders the next band while the previous one is on the bus.
  *
  * Freestanding C99, no allocation, no floating point.
  *
@@ -22,7 +23,10 @@
  *
  * Pixel formats: ZS_FMT_RGB565_BE (COLMOD 16 bpp, 2 bytes big-endian) and
  * ZS_FMT_RGB666 (COLMOD 18 bpp, 3 bytes R, G, B in bits 7..2), as each panel's
- * `formats` mask allows (ILI9488 over SPI: RGB666 only).
+ * `formats` mask allows (ILI9488 over SPI: RGB666 only). The format is the
+ * panel's (zs_panel.format): set by zs_panel_init, kept between frames,
+ * changed by zs_panel_set_format. Each frame's renderer format must match it
+ * (see zs_panel_stream).
  *
  * Typical use:
  *
@@ -99,13 +103,94 @@ extern "C" {
 #define ZS_SSD1351_RM_262K 0x80u      /* bits 7:6 = 10: 262k colours (3 bytes, bits 5..0) */
 
 /* ------------------------------------------------------------------ */
-/* Panel descriptions (constant tables)                                 */
+/* Results                                                              */
 /* ------------------------------------------------------------------ */
 
-typedef enum zs_panel_proto {
-    ZS_PANEL_DCS = 0,      /* MIPI DCS command set */
-    ZS_PANEL_SSD1351 = 1   /* Solomon SSD1351 command set */
-} zs_panel_proto;
+/* zs_panel_strerror() gives each code's comment below as text. */
+typedef enum zs_panel_status {
+    ZS_PANEL_OK = 0,
+    ZS_PANEL_ERR_NULL,         /* NULL panel, description, bus, renderer or buffer */
+    ZS_PANEL_ERR_IO,           /* the bus reported a failure */
+    ZS_PANEL_ERR_FORMAT,       /* pixel format not supported by this panel */
+    ZS_PANEL_ERR_ROTATION,     /* rotation not 0..3 */
+    ZS_PANEL_ERR_WINDOW,       /* empty window or outside the visible area */
+    ZS_PANEL_ERR_STATE,        /* panel not initialised, or pixels without an open
+                                  window or past its end */
+    ZS_PANEL_ERR_DESC,         /* inconsistent panel description */
+    ZS_PANEL_ERR_BUFFER,       /* buffer smaller than one row, band of no rows, or
+                                  not whole pixels */
+    ZS_PANEL_ERR_RENDER,       /* zs_render_rows failed (see render_status) */
+    ZS_PANEL_ERR_TIMEOUT,      /* the bus gave up waiting for a pixel transfer (wait limit) */
+    ZS_PANEL_ERR_SIZE,         /* renderer size differs from the panel size at its rotation */
+    ZS_PANEL_ERR_FRAME_FORMAT, /* the frame's pixel format is not the panel's */
+    ZS_PANEL_STATUS_COUNT      /* number of codes, not a status */
+} zs_panel_status;
+
+/* Text of a status: "ok", each code's comment above, or "unknown panel
+ * status" for a value outside the enum. Never NULL. */
+const char *zs_panel_strerror(zs_panel_status s);
+
+/* ------------------------------------------------------------------ */
+/* Controller command sets (operations tables)                          */
+/* ------------------------------------------------------------------ */
+
+struct zs_panel;
+struct zs_panel_desc;
+
+/* Turns n bytes in zspan's pixel format into the controller's wire form
+ * (as many bytes); dst may equal src. */
+typedef void (*zs_panel_encode_fn)(uint8_t *dst, const uint8_t *src, size_t n);
+
+/* What one controller family sends for each step. The common code
+ * (geometry, rotation, window bounds, write accounting, frame streaming)
+ * only calls these, so another family (another Solomon OLED, an e-paper
+ * controller) is one more table plus a description per module. Each
+ * function gets a panel whose desc, bus, format, rotation, madctl and
+ * geometry are set, and returns ZS_PANEL_OK or the first failure. Required
+ * unless marked optional. */
+typedef struct zs_panel_ops {
+    const char *name;   /* the command set, e.g. "MIPI DCS" */
+    /* Optional. Whether the description can drive `format` (DCS: it has a
+     * COLMOD value for it): ZS_PANEL_OK or ZS_PANEL_ERR_DESC. Runs before
+     * anything is sent. */
+    zs_panel_status (*check)(const struct zs_panel_desc *desc, zs_format format);
+    /* Power-up: hardware and software reset, wake-up, the description's
+     * init records, pixel format, orientation, inversion, display on, with
+     * the datasheet delays. */
+    zs_panel_status (*init)(struct zs_panel *p);
+    /* Sends the pixel format p->format. */
+    zs_panel_status (*format)(struct zs_panel *p);
+    /* Sends the orientation p->madctl (MADCTL bits; other command sets map
+     * them to their own registers). */
+    zs_panel_status (*orient)(struct zs_panel *p);
+    /* Sends the inversion: on when desc->invert and p->inverted differ. */
+    zs_panel_status (*invert)(struct zs_panel *p);
+    /* Display on or off. */
+    zs_panel_status (*display)(struct zs_panel *p, int on);
+    /* Sets the RAM window (inclusive wire coordinates, RAM offsets added)
+     * and starts a memory write. */
+    zs_panel_status (*window)(struct zs_panel *p, uint16_t xs, uint16_t ys, uint16_t xe,
+                              uint16_t ye);
+    /* Optional. Runs before each pixel write of n bytes into the open window
+     * (p->window_bytes does not count them yet): may refuse the size or send
+     * a command (DCS: RAMWRC when p->use_ramwrc). */
+    zs_panel_status (*write_begin)(struct zs_panel *p, size_t n);
+    /* Optional. The conversion the wire needs for p->format, or NULL when
+     * the controller takes zspan's bytes as they are (then every write is
+     * zero-copy). */
+    zs_panel_encode_fn (*encoder)(const struct zs_panel *p);
+} zs_panel_ops;
+
+/* MIPI DCS (ST7789, ILI9341, ST7735, GC9A01, ILI9488): everything
+ * module-specific comes from the description. */
+extern const zs_panel_ops zs_panel_ops_dcs;
+/* Solomon SSD1351: remap register for orientation and colour depth; at
+ * 18 bpp the wire takes each channel in bits 5..0 (an encoder). */
+extern const zs_panel_ops zs_panel_ops_ssd1351;
+
+/* ------------------------------------------------------------------ */
+/* Panel descriptions (constant tables)                                 */
+/* ------------------------------------------------------------------ */
 
 /* Module-specific init commands, run after SLPOUT (DCS) or after the unlock
  * (SSD1351): records of
@@ -114,16 +199,18 @@ typedef enum zs_panel_proto {
  * the parameters; n & 0x7F is the parameter count. */
 #define ZS_INIT_DELAY 0x80u
 
+/* One module. The built-in tables use designated initializers; a field left
+ * out is 0 (no offset, no inversion, no init records). */
 typedef struct zs_panel_desc {
     const char *name;            /* e.g. "st7789-240x240" */
-    uint8_t proto;               /* zs_panel_proto */
+    const zs_panel_ops *ops;     /* the controller's command set */
     uint8_t madctl;              /* MADCTL at rotation 0 (mirror and BGR bits of
                                     this module); SSD1351: the same bits, mapped
                                     to its remap register by the driver */
     uint8_t invert;              /* 1: the glass needs INVON (IPS) for normal colours */
     uint8_t formats;             /* bit (1u << zs_format) per supported format */
-    uint8_t colmod_565;          /* COLMOD for 16 bpp (0 = unsupported) */
-    uint8_t colmod_666;          /* COLMOD for 18 bpp (0 = unsupported) */
+    uint8_t colmod_565;          /* DCS: COLMOD for 16 bpp (0 = unsupported) */
+    uint8_t colmod_666;          /* DCS: COLMOD for 18 bpp (0 = unsupported) */
     uint16_t width, height;      /* visible pixels at rotation 0 */
     uint16_t ram_width, ram_height;   /* controller RAM, columns x rows */
     uint16_t col_offset, row_offset;  /* first visible RAM column / row, counted
@@ -153,35 +240,29 @@ const zs_panel_desc *zs_panel_find(const char *name);
 /* The driver                                                           */
 /* ------------------------------------------------------------------ */
 
-typedef enum zs_panel_status {
-    ZS_PANEL_OK = 0,
-    ZS_PANEL_ERR_NULL,      /* NULL panel, description, bus or buffer */
-    ZS_PANEL_ERR_IO,        /* the bus reported a failure */
-    ZS_PANEL_ERR_FORMAT,    /* pixel format not supported by this panel */
-    ZS_PANEL_ERR_ROTATION,  /* rotation not 0..3 */
-    ZS_PANEL_ERR_WINDOW,    /* empty window or outside the visible area */
-    ZS_PANEL_ERR_STATE,     /* not initialised, or pixels without a window */
-    ZS_PANEL_ERR_DESC,      /* inconsistent description table */
-    ZS_PANEL_ERR_BUFFER,    /* buffer smaller than one row, or odd size */
-    ZS_PANEL_ERR_RENDER     /* zs_render_rows failed (see render_status) */
-} zs_panel_status;
-
-const char *zs_panel_strerror(zs_panel_status s);
+/* Size of each of the two buffers zs_panel_write converts const data in
+ * when the wire needs other bytes than zspan's (SSD1351 at 18 bpp). */
+#define ZS_PANEL_SCRATCH_BYTES 64u
 
 /* Driver state. Read the fields; change them only through the functions. */
 typedef struct zs_panel {
     const zs_panel_desc *desc;
     zs_bus *bus;
-    zs_format format;
+    zs_format format;          /* the panel's pixel format: kept until changed
+                                  (zs_panel_init, zs_panel_set_format) */
     uint8_t rotation;          /* 0..3 */
     uint8_t madctl;            /* last MADCTL (or abstract SSD1351 orientation) sent */
     uint8_t inverted;          /* user inversion on top of the module's need */
     uint8_t ready;             /* init done */
     uint8_t use_ramwrc;        /* DCS: send RAMWRC before each later write (default 0) */
+    uint8_t scratch_next;      /* the scratch buffer zs_panel_write fills next */
     uint16_t width, height;    /* visible size at this rotation */
     uint16_t x_offset, y_offset;  /* RAM address of visible (0, 0) at this rotation */
     uint32_t window_bytes;     /* bytes left in the current window (0 = none open) */
     uint32_t window_total;     /* bytes of the window opened last */
+    /* zs_panel_write's conversion buffers: one fills while the other may
+     * still be on the bus. */
+    uint8_t scratch[2][ZS_PANEL_SCRATCH_BYTES];
 } zs_panel;
 
 /* Hardware reset (if the bus has a reset hook), software reset, sleep out,
@@ -202,6 +283,12 @@ zs_panel_status zs_panel_geometry(const zs_panel_desc *desc, unsigned rotation, 
                                   uint16_t *height, uint16_t *x_offset, uint16_t *y_offset);
 
 zs_panel_status zs_panel_set_rotation(zs_panel *p, unsigned rotation);
+/* Changes the panel's pixel format (DCS: COLMOD; SSD1351: the remap
+ * register's colour depth). It stays until changed again. A format the
+ * panel does not support is refused (ZS_PANEL_ERR_FORMAT, or
+ * ZS_PANEL_ERR_DESC if its table lacks the value) with nothing sent. Closes
+ * the open window. */
+zs_panel_status zs_panel_set_format(zs_panel *p, zs_format format);
 /* Inverts the displayed colours (on top of what the glass needs). */
 zs_panel_status zs_panel_set_inversion(zs_panel *p, int on);
 zs_panel_status zs_panel_display_on(zs_panel *p, int on);
@@ -212,12 +299,21 @@ zs_panel_status zs_panel_backlight(zs_panel *p, uint8_t level);
  * Pixels then go row by row, left to right, top to bottom. */
 zs_panel_status zs_panel_window(zs_panel *p, uint16_t x0, uint16_t y0, uint16_t x1, uint16_t y1);
 
-/* Sends n pixel bytes of the open window (any chunking, not necessarily whole
- * pixels or rows). With an async bus the bytes belong to the bus until
- * zs_bus_idle(). data is not const: for the SSD1351 at 18 bpp the driver
- * converts the bytes in place from bits 7..2 to the controller's bits 5..0
- * before sending. */
-zs_panel_status zs_panel_write(zs_panel *p, uint8_t *data, size_t n);
+/* Sends n pixel bytes (p->format) of the open window (any chunking, not
+ * necessarily whole pixels or rows). `data` is only read, so it may be in
+ * flash. When the wire takes zspan's bytes as they are (every DCS panel,
+ * SSD1351 at 16 bpp) data goes to the bus as it is: with an async bus it
+ * belongs to the bus until zs_bus_idle(). When the wire needs other bytes
+ * (SSD1351 at 18 bpp) they are converted into the panel's two small scratch
+ * buffers and sent in ZS_PANEL_SCRATCH_BYTES pieces; data is then free again
+ * on return. */
+zs_panel_status zs_panel_write(zs_panel *p, const uint8_t *data, size_t n);
+
+/* The zero-copy variant for writable buffers (zs_panel_stream uses it): where
+ * the wire needs other bytes the driver converts `data` IN PLACE (its bytes
+ * are then the wire's, not zspan's) and sends it in one go. With an async bus
+ * data belongs to the bus until zs_bus_idle(), in every case. */
+zs_panel_status zs_panel_write_inplace(zs_panel *p, uint8_t *data, size_t n);
 
 /* ------------------------------------------------------------------ */
 /* Frame streaming                                                      */
@@ -234,14 +330,26 @@ typedef struct zs_panel_frame_stats {
 } zs_panel_frame_stats;
 
 /* Streams the current frame of r (after zs_frame_begin / zs_frame_shading /
- * zs_draw) to the whole panel: one window, then band after band. The frame's
- * format must be p->format and the renderer's size the panel's size at its
- * rotation. Band k renders into buf[k % 2] while band k-1 may still be on the
- * bus; a buffer is never rendered into while the bus owns it. buf1 may be
- * NULL (one buffer: the renderer then waits for the wire each band).
- * buf_bytes is the size of each buffer; band_rows (>= 1) is capped to what
- * fits. wire may be NULL (no wire time). Returns when the last byte has been
- * handed to the bus and the bus is idle. */
+ * zs_draw) to the whole panel: one window, then band after band.
+ *
+ * The contract is checked before anything is sent: the renderer's size
+ * must be the panel's at its rotation (p->width x p->height, else
+ * ZS_PANEL_ERR_SIZE) and the frame's pixel format p->format (else
+ * ZS_PANEL_ERR_FRAME_FORMAT). The panel's format lasts between frames; the
+ * frame's does not: zs_frame_begin resets the shading, format included, to
+ * zs_shade_default() (RGB565 big-endian), because the core takes all of a
+ * frame's look in one zs_frame_shading call. So pass p->format in every
+ * frame's zs_shade_params; a frame that forgot is refused here instead of
+ * reaching the glass as garbage.
+ *
+ * Band k renders into buf[k % 2] while band k-1 may still be on the bus; a
+ * buffer is never rendered into while the bus owns it. buf1 may be NULL (one
+ * buffer: the renderer then waits for the wire each band). buf_bytes is the
+ * size of each buffer; band_rows (>= 1) is capped to what fits. The bands
+ * are sent with zs_panel_write_inplace (the buffers' bytes may be converted).
+ * wire may be NULL (no wire time). Returns when the last byte has been
+ * handed to the bus and the bus is idle. After ZS_PANEL_ERR_TIMEOUT the bus
+ * still owns the buffer of the lost transfer (see zs_bus_set_wait_limit). */
 zs_panel_status zs_panel_stream(zs_panel *p, zs_renderer *r, uint8_t *buf0, uint8_t *buf1,
                                 size_t buf_bytes, int band_rows, const zs_wire_model *wire,
                                 zs_panel_frame_stats *stats);

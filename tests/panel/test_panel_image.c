@@ -5,7 +5,7 @@
 
 /* Sends a full-screen picture in chunks of `chunk` bytes (any size: pixels
  * may straddle chunks). */
-static void send_full(pt_rig *r, uint8_t *img, size_t bytes, size_t chunk)
+static void send_full(pt_rig *r, const uint8_t *img, size_t bytes, size_t chunk)
 {
     size_t off = 0;
     assert_int_equal(zs_panel_window(&r->panel, 0, 0, r->panel.width, r->panel.height),
@@ -46,8 +46,11 @@ static void run_case(const zs_panel_desc *d, zs_format fmt, unsigned rot, int as
     img = make_picture(w, h, fmt, 0);
     copy = malloc(bytes);
     assert_non_null(copy);
-    memcpy(copy, img, bytes); /* the SSD1351 at 18 bpp converts in place */
-    send_full(&r, copy, bytes, ramwrc ? (chunk / bpp) * bpp : chunk);
+    memcpy(copy, img, bytes);
+    send_full(&r, img, bytes, ramwrc ? (chunk / bpp) * bpp : chunk);
+    /* const data: the caller's bytes are left alone (the SSD1351 at 18 bpp
+     * converts a copy) */
+    assert_memory_equal(img, copy, bytes);
     emu_flush(&r.emu);
     if (r.emu.errors != 0)
         pt_print_errors(&r.emu);
@@ -123,7 +126,7 @@ static void test_ramwrc_chunks(void **state)
     (void)state;
     for (i = 0; i < zs_panel_count(); i++) {
         const zs_panel_desc *d = zs_panel_at(i);
-        if (d->proto != ZS_PANEL_DCS)
+        if (d->ops != &zs_panel_ops_dcs)
             continue;
         for (f = 0; f < 2; f++)
             if (zs_panel_bytes_per_pixel(d, pt_formats[f]))
@@ -235,7 +238,8 @@ static void test_set_rotation_and_inversion(void **state)
         img = make_picture(w, h, ZS_FMT_RGB666, rot);
         copy = malloc((size_t)w * h * 3);
         memcpy(copy, img, (size_t)w * h * 3);
-        send_full(&r, copy, (size_t)w * h * 3, 777);
+        send_full(&r, img, (size_t)w * h * 3, 777);
+        assert_memory_equal(img, copy, (size_t)w * h * 3);
         assert_int_equal(pt_compare_view(&r.emu, rot, img, w, h, ZS_FMT_RGB666), 0);
         /* user inversion: every channel complemented on the glass */
         assert_int_equal(zs_panel_set_inversion(&r.panel, 1), ZS_PANEL_OK);

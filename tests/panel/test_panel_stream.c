@@ -260,8 +260,17 @@ static void test_stream_argument_checks(void **state)
                      ZS_PANEL_ERR_BUFFER);
     assert_int_equal(zs_panel_stream(&r.panel, NULL, band0, band1, 480, 1, NULL, &st),
                      ZS_PANEL_ERR_NULL);
-    /* a renderer smaller than the panel: the core refuses rows past its end */
+    /* a renderer smaller than the panel: refused before anything is sent
+     * (test_panel_contract checks the mismatches in detail) */
     scene_frame(240, 100, ZS_FMT_RGB565_BE, 0);
+    assert_int_equal(zs_panel_stream(&r.panel, &R, band0, band1, 480, 1, NULL, &st),
+                     ZS_PANEL_ERR_SIZE);
+    assert_int_equal(st.render_status, ZS_OK);
+    assert_int_equal(st.bands, 0);
+    /* a frame that fits but cannot render (rows asked for out of order: the
+     * core refuses a row before the last one) still reports the core's error */
+    scene_frame(240, 240, ZS_FMT_RGB565_BE, 0);
+    assert_int_equal(zs_render_rows(&R, 239, 1, band0, 480), ZS_OK);
     assert_int_equal(zs_panel_stream(&r.panel, &R, band0, band1, 480, 1, NULL, &st),
                      ZS_PANEL_ERR_RENDER);
     assert_int_not_equal(st.render_status, ZS_OK);

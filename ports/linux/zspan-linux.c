@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "zs_app.h"
+#include "zs_opts.h"
 #include "zs_linux.h"
 
 static const char *prog = "zspan-linux";
@@ -34,7 +35,7 @@ static void usage(FILE *f)
             "  --sclk N --mosi N [--cs N]   its clock, data and chip-select lines\n\n"
             "%s\n"
             "Exit status: 0 ok, 1 error, 2 usage, 3 the bus failed during the run.\n",
-            prog, zs_app_usage);
+            prog, ZS_APP_USAGE);
 }
 
 static const char *port_error(void *ctx)
@@ -148,6 +149,7 @@ int main(int argc, char **argv)
                    prog, c.spi_dev, (unsigned)port.cfg.hz, c.spi_mode, (unsigned)port.bufsiz,
                    c.gpiochip, c.dc, c.reset, c.backlight, port.gpio->api);
     }
+    memset(&ap, 0, sizeof ap);
     ap.name = c.bitbang ? "bit-banged SPI" : "spidev";
     ap.clock_hz = port.cfg.hz;
     ap.error = port_error;

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "zs_app.h"
+#include "zs_opts.h"
 #include "zs_mcp2210.h"
 
 static const char *prog = "zspan-mcp2210";
@@ -32,7 +33,7 @@ static void usage(FILE *f)
             "Throughput: about 60 KB/s (one 64-byte HID report per USB frame): a full 240x240\n"
             "RGB565 frame (115,200 bytes) takes about 2 s. Use --partial.\n"
             "Exit status: 0 ok, 1 error, 2 usage, 3 the device failed or vanished mid-run.\n",
-            prog, zs_app_usage);
+            prog, ZS_APP_USAGE);
 }
 
 static const char *port_error(void *ctx)
@@ -118,6 +119,7 @@ int main(int argc, char **argv)
                "backlight GP%d\n",
                prog, (unsigned)c.bit_rate, c.spi_mode, c.cs_pin, c.dc_pin, c.reset_pin,
                c.backlight_pin);
+    memset(&ap, 0, sizeof ap);
     ap.name = "MCP2210";
     ap.clock_hz = c.bit_rate;
     ap.error = port_error;

@@ -61,6 +61,23 @@ typedef struct zs_app_port {
     void *ctx;
 } zs_app_port;
 
+/* A program's own part of the command line. */
+typedef struct zs_app_cli {
+    const char *prog;
+    void (*usage)(FILE *f);                  /* --help */
+    /* Its option at argv[*i], as zs_app_option: 1 consumed, 0 unknown, -1 bad. */
+    int (*option)(void *cfg, int argc, char **argv, int *i);
+    void *cfg;
+} zs_app_cli;
+
+/* zs_app_parse's result when the program should go on and run. */
+#define ZS_APP_PARSED (-1)
+
+/* Defaults, then every argument: --help, the common options, the program's.
+ * Returns ZS_APP_PARSED, or the exit status after --help or --list (0), a
+ * bad command line (2) or no memory (1); then o is already freed. */
+int zs_app_parse(zs_app_opts *o, int argc, char **argv, const zs_app_cli *cli);
+
 /* Defaults; argc bounds the number of --mesh options. */
 void zs_app_defaults(zs_app_opts *o, int argc);
 /* Matches one common option at argv[*i]: 1 consumed (value too), 0 not a

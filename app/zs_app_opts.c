@@ -74,6 +74,37 @@ int zs_app_option(int argc, char **argv, int *i, zs_app_opts *o, const char *pro
     return 0;
 }
 
+int zs_app_parse(zs_app_opts *o, int argc, char **argv, const zs_app_cli *cli)
+{
+    int i, m;
+
+    zs_app_defaults(o, argc);
+    if (o->meshes == NULL)
+        return 1;
+    for (i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            cli->usage(stdout);
+            zs_app_free(o);
+            return 0;
+        }
+        m = zs_app_option(argc, argv, &i, o, cli->prog);
+        if (m == 0)
+            m = cli->option(cli->cfg, argc, argv, &i);
+        if (m == 0)
+            fprintf(stderr, "%s: unknown option '%s' (see --help)\n", cli->prog, argv[i]);
+        if (m <= 0) {
+            zs_app_free(o);
+            return 2;
+        }
+    }
+    if (o->list) {
+        zs_app_list_panels(stdout);
+        zs_app_free(o);
+        return 0;
+    }
+    return ZS_APP_PARSED;
+}
+
 void zs_app_list_panels(FILE *f)
 {
     unsigned i;

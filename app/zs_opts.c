@@ -60,6 +60,17 @@ int zs_opt_long(const char *prog, const char *opt, const char *s, long lo, long 
     return 0;
 }
 
+int zs_opt_long_at(int argc, char **argv, int *i, const char *name, long lo, long hi, long *out,
+                   const char *prog)
+{
+    const char *v;
+    int m = zs_opt_value(argc, argv, i, name, &v, prog);
+
+    if (m <= 0)
+        return m;
+    return zs_opt_long(prog, name, v, lo, hi, out) == 0 ? 1 : -1;
+}
+
 int zs_opt_double(const char *prog, const char *opt, const char *s, double *out)
 {
     char *end = NULL;

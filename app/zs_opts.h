@@ -15,6 +15,10 @@ int zs_opt_value(int argc, char **argv, int *i, const char *name, const char **v
 
 /* An integer in [lo, hi], decimal or 0x hex. */
 int zs_opt_long(const char *prog, const char *opt, const char *s, long lo, long hi, long *out);
+/* "--name N" at argv[*i] with N in [lo, hi]: 1 (*out set), 0 (another
+ * option), -1 (missing or bad value). */
+int zs_opt_long_at(int argc, char **argv, int *i, const char *name, long lo, long hi, long *out,
+                   const char *prog);
 /* A finite decimal number, the whole string. */
 int zs_opt_double(const char *prog, const char *opt, const char *s, double *out);
 /* n comma-separated decimal numbers. */

@@ -34,19 +34,16 @@ int zs_app_option(int argc, char **argv, int *i, zs_app_opts *o, const char *pro
     if (strcmp(a, "--quiet") == 0) { o->quiet = 1; return 1; }
     if (strcmp(a, "--list") == 0) { o->list = 1; return 1; }
 #define LONG_OPT(name, lo, hi, field)                                                          \
-    if ((m = zs_opt_value(argc, argv, i, name, &v, prog)) != 0)                                \
-        return m < 0 || zs_opt_long(prog, name, v, lo, hi, &o->field) != 0 ? -1 : 1;
+    if ((m = zs_opt_long_at(argc, argv, i, name, lo, hi, &o->field, prog)) != 0)               \
+        return m;
     LONG_OPT("--rotation", 0, 3, rotation)
     LONG_OPT("--frames", 0, 100000000L, frames)
     LONG_OPT("--start", 0, 1000000L, start_frame)
     LONG_OPT("--band", 1, 2048, band)
     LONG_OPT("--brightness", 0, 255, backlight)
 #undef LONG_OPT
-    if ((m = zs_opt_value(argc, argv, i, "--panel", &v, prog)) != 0) {
-        if (m > 0)
-            o->panel = v;
+    if ((m = zs_opt_value(argc, argv, i, "--panel", &o->panel, prog)) != 0)
         return m;
-    }
     if ((m = zs_opt_value(argc, argv, i, "--mesh", &v, prog)) != 0) {
         if (m > 0)
             o->meshes[o->nmeshes++] = v;

@@ -5,25 +5,25 @@
 #include <math.h>
 #include <string.h>
 
-static void mat4_from_ai(const struct aiMatrix4x4 *m, double a[4][4])
+static void affine_from_ai(const struct aiMatrix4x4 *m, double a[3][4])
 {
     a[0][0] = m->a1; a[0][1] = m->a2; a[0][2] = m->a3; a[0][3] = m->a4;
     a[1][0] = m->b1; a[1][1] = m->b2; a[1][2] = m->b3; a[1][3] = m->b4;
     a[2][0] = m->c1; a[2][1] = m->c2; a[2][2] = m->c3; a[2][3] = m->c4;
-    a[3][0] = m->d1; a[3][1] = m->d2; a[3][2] = m->d3; a[3][3] = m->d4;
 }
 
-/* r = a * b (b applies first). */
-static void mat4_mul(double a[4][4], double b[4][4], double r[4][4])
+/* r = a * b (b applies first). Node transforms are affine: the bottom row is
+ * taken as (0 0 0 1) even where a file's is off by a rounding error. */
+static void affine_mul(double a[3][4], double b[3][4], double r[3][4])
 {
     int i, j, k;
 
-    for (i = 0; i < 4; i++)
+    for (i = 0; i < 3; i++)
         for (j = 0; j < 4; j++) {
             double s = 0;
-            for (k = 0; k < 4; k++)
+            for (k = 0; k < 3; k++)
                 s += a[i][k] * b[k][j];
-            r[i][j] = s;
+            r[i][j] = j == 3 ? s + a[i][3] : s;
         }
 }
 
@@ -48,17 +48,17 @@ typedef struct walk {
     void *user;
 } walk;
 
-static int walk_node(const walk *w, const struct aiNode *node, double parent[4][4], int depth)
+static int walk_node(const walk *w, const struct aiNode *node, double parent[3][4], int depth)
 {
     zs_import_part part;
-    double local[4][4];
+    double local[3][4];
     unsigned i;
     int rc;
 
     if (depth > ZS_IMPORT_MAX_DEPTH)
         return ZS_IMPORT_ERR_DEPTH;
-    mat4_from_ai(&node->mTransformation, local);
-    mat4_mul(parent, local, part.world);
+    affine_from_ai(&node->mTransformation, local);
+    affine_mul(parent, local, part.world);
     normal_matrix(&part);
     part.scene = w->scene;
     for (i = 0; i < node->mNumMeshes; i++) {
@@ -79,11 +79,11 @@ static int walk_node(const walk *w, const struct aiNode *node, double parent[4][
 int zs_import_walk(const struct aiScene *scene,
                    int (*fn)(void *user, const zs_import_part *part), void *user)
 {
-    double id[4][4];
+    double id[3][4];
     walk w;
     int i, j;
 
-    for (i = 0; i < 4; i++)
+    for (i = 0; i < 3; i++)
         for (j = 0; j < 4; j++)
             id[i][j] = i == j ? 1.0 : 0.0;
     w.scene = scene;

@@ -22,7 +22,7 @@
 typedef struct zs_import_part {
     const struct aiScene *scene;
     const struct aiMesh *mesh;
-    double world[4][4];   /* the node's global transform (parents applied) */
+    double world[3][4];   /* the node's global transform (parents applied), affine */
     double normal[3][3];  /* cofactors of world's 3x3 (det x inverse transpose): maps normals */
     int mirrored;         /* det < 0: the transform turns windings inside out */
 } zs_import_part;

@@ -63,7 +63,6 @@ static void port_report(void *ctx, FILE *f)
 static int port_option(void *cfg, int argc, char **argv, int *i)
 {
     zs_linux_cfg *c = cfg;
-    const char *s;
     long v;
     int m;
 
@@ -71,16 +70,9 @@ static int port_option(void *cfg, int argc, char **argv, int *i)
         c->bitbang = 1;
         return 1;
     }
-    if ((m = zs_opt_value(argc, argv, i, "--spi", &s, prog)) != 0) {
-        if (m > 0)
-            c->spi_dev = s;
+    if ((m = zs_opt_value(argc, argv, i, "--spi", &c->spi_dev, prog)) != 0 ||
+        (m = zs_opt_value(argc, argv, i, "--gpiochip", &c->gpiochip, prog)) != 0)
         return m;
-    }
-    if ((m = zs_opt_value(argc, argv, i, "--gpiochip", &s, prog)) != 0) {
-        if (m > 0)
-            c->gpiochip = s;
-        return m;
-    }
 #define LINE_OPT(name, lo, hi, field)                                                          \
     if ((m = zs_opt_long_at(argc, argv, i, name, lo, hi, &v, prog)) != 0)                      \
         return m > 0 ? (c->field = (__typeof__(c->field))v, 1) : -1;

@@ -62,15 +62,11 @@ typedef struct mcp_args {
 static int port_option(void *cfg, int argc, char **argv, int *i)
 {
     mcp_args *a = cfg;
-    const char *s;
     long v;
     int m;
 
-    if ((m = zs_opt_value(argc, argv, i, "--device", &s, prog)) != 0) {
-        if (m > 0)
-            a->path = s;
+    if ((m = zs_opt_value(argc, argv, i, "--device", &a->path, prog)) != 0)
         return m;
-    }
 #define PIN_OPT(name, lo, hi, field)                                                           \
     if ((m = zs_opt_long_at(argc, argv, i, name, lo, hi, &v, prog)) != 0)                      \
         return m > 0 ? (a->c.field = (__typeof__(a->c.field))v, 1) : -1;

@@ -17,6 +17,7 @@
 
 #include <ctype.h>
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <signal.h>
 #include <stdarg.h>
@@ -29,6 +30,7 @@
 #include <unistd.h>
 
 #include "zs_import.h"
+#include "zs_opts.h"
 
 #define MESHC_VERSION "1.0"
 #define MAX_OUT 65535u              /* uint16 indices and counts */
@@ -992,36 +994,50 @@ static void usage(FILE *f)
         "5 cannot write the output.\n");
 }
 
-static unsigned long parse_count(const char *opt, const char *s)
+/* Option messages say "zspan-meshc: error: ..." like every other failure. */
+#define OPT_PROG "zspan-meshc: error"
+
+/* A positive decimal number (--fit, --scale). */
+static double positive_arg(const char *opt, const char *v)
 {
-    char *end;
-    unsigned long v;
-    errno = 0;
-    v = strtoul(s, &end, 10);
-    if (errno || *end || v == 0 || v > MAX_OUT || s[0] == '-') {
-        fprintf(stderr, "%s: error: %s needs an integer in 1..%u, got '%s'\n", g_prog, opt,
-                MAX_OUT, s);
+    double x;
+    if (zs_opt_double(OPT_PROG, opt, v, &x) != 0)
+        exit(EXIT_USAGE);
+    if (!(x > 0)) {
+        fprintf(stderr, "%s: error: %s needs a positive number, got '%s'\n", g_prog, opt, v);
         exit(EXIT_USAGE);
     }
-    return v;
+    return x;
 }
 
-static double parse_double(const char *opt, const char *s)
+/* An integer option "NAME N" at argv[*i] (1 = matched). */
+static int long_arg(int argc, char **argv, int *i, const char *name, long lo, long hi, long *out)
 {
-    char *end;
-    double v;
-    errno = 0;
-    v = strtod(s, &end);
-    if (errno || *end || !isfinite(v) || v <= 0) {
-        fprintf(stderr, "%s: error: %s needs a positive number, got '%s'\n", g_prog, opt, s);
+    int m = zs_opt_long_at(argc, argv, i, name, lo, hi, out, OPT_PROG);
+    if (m < 0)
         exit(EXIT_USAGE);
-    }
-    return v;
+    return m;
+}
+
+/* A string option "NAME VALUE" (or a short alias) at argv[*i] (1 = matched). */
+static int str_arg(int argc, char **argv, int *i, const char *name, const char *alias,
+                   const char **out)
+{
+    int m = zs_opt_value(argc, argv, i, name, out, OPT_PROG);
+    if (m == 0 && alias != NULL)
+        m = zs_opt_value(argc, argv, i, alias, out, OPT_PROG);
+    if (m < 0)
+        exit(EXIT_USAGE);
+    return m;
 }
 
 static void parse_args(int argc, char **argv, options *o)
 {
-    int i;
+    static const char *const color_srcs[] = {"none", "material", "vertex", "index"};
+    static const char *const normal_kinds[] = {"none", "face", "smooth", "file"};
+    const char *v;
+    long n;
+    int i, k;
     memset(o, 0, sizeof *o);
     o->scale = 1.0;
     o->merge = 1;
@@ -1030,108 +1046,42 @@ static void parse_args(int argc, char **argv, options *o)
     o->mem_limit_mb = -1;
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];
-#define NEED_ARG()                                                                         \
-    do {                                                                                   \
-        if (i + 1 >= argc) {                                                               \
-            fprintf(stderr, "%s: error: %s needs an argument\n", g_prog, a);               \
-            exit(EXIT_USAGE);                                                              \
-        }                                                                                  \
-    } while (0)
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
             usage(stdout);
             exit(0);
-        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
-            NEED_ARG();
-            o->output = argv[++i];
-        } else if (!strcmp(a, "-n") || !strcmp(a, "--name")) {
-            NEED_ARG();
-            o->name = argv[++i];
+        } else if (str_arg(argc, argv, &i, "--output", "-o", &o->output) ||
+                   str_arg(argc, argv, &i, "--name", "-n", &o->name)) {
+            continue;
         } else if (!strcmp(a, "--center")) {
             o->center = 1;
-        } else if (!strcmp(a, "--fit")) {
-            NEED_ARG();
+        } else if (str_arg(argc, argv, &i, "--fit", NULL, &v)) {
             o->fit = 1;
-            o->fit_radius = parse_double(a, argv[++i]);
+            o->fit_radius = positive_arg("--fit", v);
         } else if (!strcmp(a, "--normalize")) {
             o->center = 1;
             o->fit = 1;
             o->fit_radius = 1.0;
-        } else if (!strcmp(a, "--scale")) {
-            NEED_ARG();
-            o->scale = parse_double(a, argv[++i]);
-        } else if (!strcmp(a, "--quant-scale")) {
-            char *end;
-            NEED_ARG();
-            errno = 0;
-            o->quant_scale = strtol(argv[++i], &end, 0);
-            if (errno || *end || o->quant_scale <= 0 || o->quant_scale > 0x7FFFFFFF) {
-                fprintf(stderr, "%s: error: --quant-scale needs a positive integer\n", g_prog);
+        } else if (str_arg(argc, argv, &i, "--scale", NULL, &v)) {
+            o->scale = positive_arg("--scale", v);
+        } else if (long_arg(argc, argv, &i, "--quant-scale", 1, 0x7FFFFFFF, &o->quant_scale)) {
+            continue;
+        } else if (long_arg(argc, argv, &i, "--max-triangles", 1, MAX_OUT, &n)) {
+            o->max_tris = (unsigned long)n;
+        } else if (long_arg(argc, argv, &i, "--max-vertices", 1, MAX_OUT, &n)) {
+            o->max_verts = (unsigned long)n;
+        } else if (str_arg(argc, argv, &i, "--colors", "--colours", &v)) {
+            if (zs_opt_choice(OPT_PROG, "--colors", v, color_srcs, 4, &k) != 0)
                 exit(EXIT_USAGE);
-            }
-        } else if (!strcmp(a, "--max-triangles")) {
-            NEED_ARG();
-            o->max_tris = parse_count(a, argv[++i]);
-        } else if (!strcmp(a, "--max-vertices")) {
-            NEED_ARG();
-            o->max_verts = parse_count(a, argv[++i]);
-        } else if (!strcmp(a, "--colors") || !strcmp(a, "--colours")) {
-            const char *v;
-            NEED_ARG();
-            v = argv[++i];
-            if (!strcmp(v, "none"))
-                o->colors = COL_NONE;
-            else if (!strcmp(v, "material"))
-                o->colors = COL_MATERIAL;
-            else if (!strcmp(v, "vertex"))
-                o->colors = COL_VERTEX;
-            else if (!strcmp(v, "index"))
-                o->colors = COL_INDEX;
-            else {
-                fprintf(stderr, "%s: error: --colors: unknown source '%s' "
-                                "(none, material, vertex, index)\n", g_prog, v);
+            o->colors = (enum color_src)k;
+        } else if (str_arg(argc, argv, &i, "--color", "--colour", &v)) {
+            if (zs_opt_color(OPT_PROG, "--color", v, &o->base_color) != 0)
                 exit(EXIT_USAGE);
-            }
-        } else if (!strcmp(a, "--color") || !strcmp(a, "--colour")) {
-            char *end;
-            const char *v;
-            unsigned long c;
-            NEED_ARG();
-            v = argv[++i];
-            if (v[0] == '#')
-                v++;
-            errno = 0;
-            c = strtoul(v, &end, 16);
-            if (errno || *end || strlen(v) != 6) {
-                fprintf(stderr, "%s: error: --color needs RRGGBB hex, got '%s'\n", g_prog, v);
+        } else if (str_arg(argc, argv, &i, "--normals", NULL, &v)) {
+            if (zs_opt_choice(OPT_PROG, "--normals", v, normal_kinds, 4, &k) != 0)
                 exit(EXIT_USAGE);
-            }
-            o->base_color = (uint32_t)c;
-        } else if (!strcmp(a, "--normals")) {
-            const char *v;
-            NEED_ARG();
-            v = argv[++i];
-            if (!strcmp(v, "none"))
-                o->normals = NRM_NONE;
-            else if (!strcmp(v, "face"))
-                o->normals = NRM_FACE;
-            else if (!strcmp(v, "smooth"))
-                o->normals = NRM_SMOOTH;
-            else if (!strcmp(v, "file"))
-                o->normals = NRM_FILE;
-            else {
-                fprintf(stderr, "%s: error: --normals: unknown kind '%s' "
-                                "(none, face, smooth, file)\n", g_prog, v);
-                exit(EXIT_USAGE);
-            }
-        } else if (!strcmp(a, "--mem-limit")) {
-            char *end;
-            NEED_ARG();
-            errno = 0;
-            o->mem_limit_mb = strtol(argv[++i], &end, 10);
-            if (errno || *end || o->mem_limit_mb < 0) {
-                fprintf(stderr, "%s: error: --mem-limit needs a size in MB\n", g_prog);
-                exit(EXIT_USAGE);
-            }
+            o->normals = (enum normal_kind)k;
+        } else if (long_arg(argc, argv, &i, "--mem-limit", 0, LONG_MAX >> 20, &o->mem_limit_mb)) {
+            continue;
         } else if (!strcmp(a, "--no-merge")) {
             o->merge = 0;
         } else if (!strcmp(a, "--flip-winding")) {
@@ -1152,7 +1102,6 @@ static void parse_args(int argc, char **argv, options *o)
                     o->input, a);
             exit(EXIT_USAGE);
         }
-#undef NEED_ARG
     }
     if (!o->input) {
         usage(stderr);

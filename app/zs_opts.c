@@ -198,35 +198,19 @@ int zs_opt_fixed(const char *prog, const char *what, double v, zs_fixed *out)
     return 0;
 }
 
-int zs_opt_mode(const char *prog, const char *s, zs_visibility *out)
-{
-    static const char *const words[] = {"span", "zline"};
-    int k;
+/* A typed parser of a two-word option: the words and the values they stand for. */
+#define TWO_WORDS(fn, type, opt, w0, v0, w1, v1)                                               \
+    int fn(const char *prog, const char *s, type *out)                                         \
+    {                                                                                          \
+        static const char *const words[] = {w0, w1};                                           \
+        int k;                                                                                 \
+        if (zs_opt_choice(prog, opt, s, words, 2, &k) != 0)                                    \
+            return -1;                                                                         \
+        *out = k == 0 ? v0 : v1;                                                               \
+        return 0;                                                                              \
+    }
 
-    if (zs_opt_choice(prog, "--mode", s, words, 2, &k) != 0)
-        return -1;
-    *out = k == 0 ? ZS_MODE_SPAN : ZS_MODE_ZLINE;
-    return 0;
-}
-
-int zs_opt_shade(const char *prog, const char *s, zs_shading *out)
-{
-    static const char *const words[] = {"flat", "gouraud"};
-    int k;
-
-    if (zs_opt_choice(prog, "--shade", s, words, 2, &k) != 0)
-        return -1;
-    *out = k == 0 ? ZS_SHADE_FLAT : ZS_SHADE_GOURAUD;
-    return 0;
-}
-
-int zs_opt_wire_format(const char *prog, const char *s, zs_format *out)
-{
-    static const char *const words[] = {"rgb565", "rgb666"};
-    int k;
-
-    if (zs_opt_choice(prog, "--format", s, words, 2, &k) != 0)
-        return -1;
-    *out = k == 0 ? ZS_FMT_RGB565_BE : ZS_FMT_RGB666;
-    return 0;
-}
+TWO_WORDS(zs_opt_mode, zs_visibility, "--mode", "span", ZS_MODE_SPAN, "zline", ZS_MODE_ZLINE)
+TWO_WORDS(zs_opt_shade, zs_shading, "--shade", "flat", ZS_SHADE_FLAT, "gouraud", ZS_SHADE_GOURAUD)
+TWO_WORDS(zs_opt_wire_format, zs_format, "--format", "rgb565", ZS_FMT_RGB565_BE, "rgb666",
+          ZS_FMT_RGB666)

@@ -195,7 +195,8 @@ static int parse_args(int argc, char **argv, render_opts *o)
             if (m < 0 || zs_opt_long(SIM_PROG, "--band", v, 1, ZS_MAX_DIM, &o->band) != 0)
                 return SIM_EXIT_USAGE;
         } else if (OPT("--max-tris")) {
-            if (m < 0 || zs_opt_long(SIM_PROG, "--max-tris", v, 1, ZS_MAX_TRIANGLES, &o->max_tris) != 0)
+            if (m < 0 ||
+                zs_opt_long(SIM_PROG, "--max-tris", v, 1, ZS_MAX_TRIANGLES, &o->max_tris) != 0)
                 return SIM_EXIT_USAGE;
         } else if (OPT("--max-verts")) {
             if (m < 0 ||
@@ -290,7 +291,8 @@ static int vec_to_fixed(const char *what, const double v[3], zs_vec3 *out)
 {
     zs_fixed x, y, z;
 
-    if (zs_opt_fixed(SIM_PROG, what, v[0], &x) != 0 || zs_opt_fixed(SIM_PROG, what, v[1], &y) != 0 ||
+    if (zs_opt_fixed(SIM_PROG, what, v[0], &x) != 0 ||
+        zs_opt_fixed(SIM_PROG, what, v[1], &y) != 0 ||
         zs_opt_fixed(SIM_PROG, what, v[2], &z) != 0)
         return -1;
     *out = zs_vec3_make(x, y, z);

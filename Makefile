@@ -56,6 +56,10 @@ CORE_ASAN_CFLAGS := $(CORE_WARN) $(ASAN_FLAGS) -g -O1 -Iinclude
 M0_CFLAGS := -mcpu=cortex-m0 -mthumb -mfloat-abi=soft -Os -std=c99 -ffreestanding $(CORE_REQUIRED_FLAGS) \
              -Wall -Wextra -Werror -Iinclude
 
+# The application layer (app/): scenes, options, sizing, the panel frame loop.
+APP_SRCS := $(sort $(wildcard app/*.c))
+APP_HDRS := $(wildcard app/*.h)
+
 LIB := $(BUILD)/libzspan.a
 ASAN_LIB := $(BUILD)/asan/libzspan.a
 SIM := $(BUILD)/zspan-sim
@@ -77,12 +81,13 @@ SUITE_RUNNER := bash tests/run_suites.sh
 -include $(sort $(wildcard mk/*.mk))
 
 # ---------------------------------------------------------------------------
-# Host simulator (host_sim/*.c at the top level only, plus SIM_EXTRA_SRCS)
+# Host simulator (host_sim/*.c at the top level only, the application layer
+# app/*.c, plus SIM_EXTRA_SRCS)
 # ---------------------------------------------------------------------------
-SIM_SRCS := $(sort $(wildcard host_sim/*.c)) $(SIM_EXTRA_SRCS)
+SIM_SRCS := $(sort $(wildcard host_sim/*.c)) $(APP_SRCS) $(SIM_EXTRA_SRCS)
 SIM_OBJS := $(patsubst %.c,$(BUILD)/sim/%.o,$(SIM_SRCS))
 # Recursive (=): pkg-config runs when a recipe needs it, i.e. after `deps`.
-SIM_CFLAGS = -std=c99 -Wall -Wextra -Werror -D_POSIX_C_SOURCE=200809L -O2 -g -Iinclude \
+SIM_CFLAGS = -std=c99 -Wall -Wextra -Werror -D_POSIX_C_SOURCE=200809L -O2 -g -Iinclude -Iapp \
              $(shell $(PKG_CONFIG) --cflags assimp libpng) $(SIM_EXTRA_CFLAGS)
 SIM_LIBS = $(shell $(PKG_CONFIG) --libs assimp libpng) -lm $(SIM_EXTRA_LIBS)
 

@@ -6,8 +6,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mesh_load.h"
 #include "png_out.h"
+#include "zs_arena.h"
+#include "zs_model.h"
+#include "zs_opts.h"
 
 enum { SHADE_FLAT, SHADE_GOURAUD, SHADE_IDS };
 
@@ -72,9 +74,9 @@ static int parse_fog(const char *s, render_opts *o)
         goto bad;
     *c1 = '\0';
     *c2 = '\0';
-    if (sim_parse_double("--fog", buf, &o->fog_start) != 0 ||
-        sim_parse_double("--fog", c1 + 1, &o->fog_end) != 0 ||
-        sim_parse_color("--fog", c2 + 1, &o->fog_color) != 0)
+    if (zs_opt_double(SIM_PROG, "--fog", buf, &o->fog_start) != 0 ||
+        zs_opt_double(SIM_PROG, "--fog", c1 + 1, &o->fog_end) != 0 ||
+        zs_opt_color(SIM_PROG, "--fog", c2 + 1, &o->fog_color) != 0)
         return -1;
     o->fog = 1;
     return 0;
@@ -131,56 +133,39 @@ static int parse_args(int argc, char **argv, render_opts *o)
             o->quiet = 1;
             continue;
         }
-#define OPT(name) ((m = sim_opt_value(argc, argv, &i, name, &v)) != 0)
+#define OPT(name) ((m = zs_opt_value(argc, argv, &i, name, &v, SIM_PROG)) != 0)
         if (OPT("--size")) {
-            if (m < 0 || sim_parse_size("--size", v, &o->width, &o->height) != 0)
+            if (m < 0 || zs_opt_size(SIM_PROG, "--size", v, &o->width, &o->height) != 0)
                 return SIM_EXIT_USAGE;
         } else if (OPT("--fov")) {
-            if (m < 0 || sim_parse_double("--fov", v, &o->fov) != 0)
+            if (m < 0 || zs_opt_double(SIM_PROG, "--fov", v, &o->fov) != 0)
                 return SIM_EXIT_USAGE;
         } else if (OPT("--near")) {
-            if (m < 0 || sim_parse_double("--near", v, &o->near_z) != 0)
+            if (m < 0 || zs_opt_double(SIM_PROG, "--near", v, &o->near_z) != 0)
                 return SIM_EXIT_USAGE;
         } else if (OPT("--far")) {
-            if (m < 0 || sim_parse_double("--far", v, &o->far_z) != 0)
+            if (m < 0 || zs_opt_double(SIM_PROG, "--far", v, &o->far_z) != 0)
                 return SIM_EXIT_USAGE;
         } else if (OPT("--eye")) {
-            if (m < 0 || sim_parse_doubles("--eye", v, o->eye, 3) != 0)
+            if (m < 0 || zs_opt_doubles(SIM_PROG, "--eye", v, o->eye, 3) != 0)
                 return SIM_EXIT_USAGE;
         } else if (OPT("--target")) {
-            if (m < 0 || sim_parse_doubles("--target", v, o->target, 3) != 0)
+            if (m < 0 || zs_opt_doubles(SIM_PROG, "--target", v, o->target, 3) != 0)
                 return SIM_EXIT_USAGE;
         } else if (OPT("--up")) {
-            if (m < 0 || sim_parse_doubles("--up", v, o->up, 3) != 0)
+            if (m < 0 || zs_opt_doubles(SIM_PROG, "--up", v, o->up, 3) != 0)
                 return SIM_EXIT_USAGE;
         } else if (OPT("--rotate")) {
-            if (m < 0 || sim_parse_doubles("--rotate", v, o->rot, 3) != 0)
+            if (m < 0 || zs_opt_doubles(SIM_PROG, "--rotate", v, o->rot, 3) != 0)
                 return SIM_EXIT_USAGE;
             o->has_rot = 1;
         } else if (OPT("--mode")) {
-            if (m < 0)
+            if (m < 0 || zs_opt_mode(SIM_PROG, v, &o->mode) != 0)
                 return SIM_EXIT_USAGE;
-            if (strcmp(v, "span") == 0) {
-                o->mode = ZS_MODE_SPAN;
-            } else if (strcmp(v, "zline") == 0) {
-                o->mode = ZS_MODE_ZLINE;
-            } else {
-                fprintf(stderr, "zspan-sim: --mode: '%s' is not span or zline\n", v);
-                return SIM_EXIT_USAGE;
-            }
         } else if (OPT("--shade")) {
-            if (m < 0)
+            static const char *const shades[] = {"flat", "gouraud", "ids"};
+            if (m < 0 || zs_opt_choice(SIM_PROG, "--shade", v, shades, 3, &o->shade) != 0)
                 return SIM_EXIT_USAGE;
-            if (strcmp(v, "flat") == 0) {
-                o->shade = SHADE_FLAT;
-            } else if (strcmp(v, "gouraud") == 0) {
-                o->shade = SHADE_GOURAUD;
-            } else if (strcmp(v, "ids") == 0) {
-                o->shade = SHADE_IDS;
-            } else {
-                fprintf(stderr, "zspan-sim: --shade: '%s' is not flat, gouraud or ids\n", v);
-                return SIM_EXIT_USAGE;
-            }
         } else if (OPT("--out")) {
             if (m < 0)
                 return SIM_EXIT_USAGE;
@@ -190,35 +175,36 @@ static int parse_args(int argc, char **argv, render_opts *o)
                 return SIM_EXIT_USAGE;
             o->dump = v;
         } else if (OPT("--background")) {
-            if (m < 0 || sim_parse_color("--background", v, &o->background) != 0)
+            if (m < 0 || zs_opt_color(SIM_PROG, "--background", v, &o->background) != 0)
                 return SIM_EXIT_USAGE;
         } else if (OPT("--light")) {
             if (m < 0)
                 return SIM_EXIT_USAGE;
             o->light[3] = 0.7;
-            if (sim_parse_doubles("--light", v, o->light, count_commas(v) == 3 ? 4 : 3) != 0)
+            if (zs_opt_doubles(SIM_PROG, "--light", v, o->light, count_commas(v) == 3 ? 4 : 3) != 0)
                 return SIM_EXIT_USAGE;
             o->has_light = 1;
         } else if (OPT("--ambient")) {
-            if (m < 0 || sim_parse_double("--ambient", v, &o->ambient) != 0)
+            if (m < 0 || zs_opt_double(SIM_PROG, "--ambient", v, &o->ambient) != 0)
                 return SIM_EXIT_USAGE;
             o->has_ambient = 1;
         } else if (OPT("--fog")) {
             if (m < 0 || parse_fog(v, o) != 0)
                 return SIM_EXIT_USAGE;
         } else if (OPT("--band")) {
-            if (m < 0 || sim_parse_long("--band", v, 1, ZS_MAX_DIM, &o->band) != 0)
+            if (m < 0 || zs_opt_long(SIM_PROG, "--band", v, 1, ZS_MAX_DIM, &o->band) != 0)
                 return SIM_EXIT_USAGE;
         } else if (OPT("--max-tris")) {
-            if (m < 0 || sim_parse_long("--max-tris", v, 1, ZS_MAX_TRIANGLES, &o->max_tris) != 0)
+            if (m < 0 ||
+                zs_opt_long(SIM_PROG, "--max-tris", v, 1, ZS_MAX_TRIANGLES, &o->max_tris) != 0)
                 return SIM_EXIT_USAGE;
         } else if (OPT("--max-verts")) {
             if (m < 0 ||
-                sim_parse_long("--max-verts", v, 1, ZS_MAX_VERTICES, &o->max_verts) != 0)
+                zs_opt_long(SIM_PROG, "--max-verts", v, 1, ZS_MAX_VERTICES, &o->max_verts) != 0)
                 return SIM_EXIT_USAGE;
         } else if (OPT("--max-edges")) {
             if (m < 0 ||
-                sim_parse_long("--max-edges", v, 2, ZS_MAX_ACTIVE_EDGES, &o->max_edges) != 0)
+                zs_opt_long(SIM_PROG, "--max-edges", v, 2, ZS_MAX_ACTIVE_EDGES, &o->max_edges) != 0)
                 return SIM_EXIT_USAGE;
         } else {
             fprintf(stderr, "zspan-sim: render: unknown option '%s' (see zspan-sim --help)\n",
@@ -305,8 +291,9 @@ static int vec_to_fixed(const char *what, const double v[3], zs_vec3 *out)
 {
     zs_fixed x, y, z;
 
-    if (sim_to_fixed(what, v[0], &x) != 0 || sim_to_fixed(what, v[1], &y) != 0 ||
-        sim_to_fixed(what, v[2], &z) != 0)
+    if (zs_opt_fixed(SIM_PROG, what, v[0], &x) != 0 ||
+        zs_opt_fixed(SIM_PROG, what, v[1], &y) != 0 ||
+        zs_opt_fixed(SIM_PROG, what, v[2], &z) != 0)
         return -1;
     *out = zs_vec3_make(x, y, z);
     return 0;
@@ -321,7 +308,7 @@ static int core_error(const char *call, zs_status st)
 int sim_cmd_render(int argc, char **argv)
 {
     render_opts o;
-    sim_scene scene;
+    zs_model scene;
     zs_renderer r;
     zs_camera cam;
     zs_config cfg;
@@ -335,7 +322,6 @@ int sim_cmd_render(int argc, char **argv)
     FILE *dump = NULL;
     size_t arena_size, stride, i;
     unsigned bpp;
-    long max_tris, max_verts, max_edges;
     int rc = SIM_EXIT_FAIL, f;
 
     memset(&scene, 0, sizeof scene);
@@ -348,15 +334,15 @@ int sim_cmd_render(int argc, char **argv)
 
     /* Camera and projection first: bad numbers are usage errors. */
     if (vec_to_fixed("--eye", o.eye, &eye) != 0 || vec_to_fixed("--target", o.target, &target) != 0 ||
-        vec_to_fixed("--up", o.up, &up) != 0 || sim_to_fixed("--fov", o.fov, &fov) != 0 ||
-        sim_to_fixed("--near", o.near_z, &near_z) != 0 ||
-        sim_to_fixed("--far", o.far_z, &far_z) != 0) {
+        vec_to_fixed("--up", o.up, &up) != 0 || zs_opt_fixed(SIM_PROG, "--fov", o.fov, &fov) != 0 ||
+        zs_opt_fixed(SIM_PROG, "--near", o.near_z, &near_z) != 0 ||
+        zs_opt_fixed(SIM_PROG, "--far", o.far_z, &far_z) != 0) {
         free(o.files);
         return SIM_EXIT_USAGE;
     }
 
     for (f = 0; f < o.nfiles; f++) {
-        if (sim_scene_load(&scene, o.files[f],
+        if (zs_model_load(&scene, o.files[f],
                            o.shade == SHADE_GOURAUD ? (o.smooth ? 2 : 1) : 0) != 0)
             goto done;
         if (scene.total_tris > ZS_MAX_TRIANGLES) {
@@ -370,20 +356,20 @@ int sim_cmd_render(int argc, char **argv)
 
     if (o.fit) {
         double lo[3], hi[3], c[3], radius;
-        if (sim_scene_bounds(&scene, lo, hi)) {
+        if (zs_model_bounds(&scene, lo, hi)) {
             for (f = 0; f < 3; f++)
                 c[f] = 0.5 * (lo[f] + hi[f]);
-            radius = sim_scene_radius(&scene, c);
-            sim_scene_transform(&scene, c, radius > 0.0 ? 1.0 / radius : 1.0);
+            radius = zs_model_radius(&scene, c);
+            zs_model_transform(&scene, c, radius > 0.0 ? 1.0 / radius : 1.0);
         }
     }
-    if (sim_scene_quantize(&scene) != 0)
+    if (zs_model_quantize(&scene) != 0)
         goto done;
 
     /* Colours: vertex colours, else the material's diffuse colour, else (flat)
      * a palette colour per triangle or (gouraud) a light grey. */
     for (i = 0; i < scene.count; i++) {
-        sim_chunk *c = &scene.chunks[i];
+        zs_model_chunk *c = &scene.chunks[i];
         if (o.shade == SHADE_FLAT && c->vcol == NULL && !c->has_material_color &&
             c->tcount > 0) {
             uint32_t t;
@@ -401,9 +387,9 @@ int sim_cmd_render(int argc, char **argv)
     if (o.has_rot) {
         zs_fixed ax, ay, az;
         zs_mat34 rx, ry, rz, m;
-        if (sim_to_fixed("--rotate", o.rot[0], &ax) != 0 ||
-            sim_to_fixed("--rotate", o.rot[1], &ay) != 0 ||
-            sim_to_fixed("--rotate", o.rot[2], &az) != 0) {
+        if (zs_opt_fixed(SIM_PROG, "--rotate", o.rot[0], &ax) != 0 ||
+            zs_opt_fixed(SIM_PROG, "--rotate", o.rot[1], &ay) != 0 ||
+            zs_opt_fixed(SIM_PROG, "--rotate", o.rot[2], &az) != 0) {
             rc = SIM_EXIT_USAGE;
             goto done;
         }
@@ -417,31 +403,12 @@ int sim_cmd_render(int argc, char **argv)
     }
 
     /* Arena from the scene: clipping can split a triangle into a few. */
-    max_tris = o.max_tris ? o.max_tris : (long)scene.total_tris * 3 + 64;
-    if (max_tris > ZS_MAX_TRIANGLES)
-        max_tris = ZS_MAX_TRIANGLES;
-    max_verts = o.max_verts ? o.max_verts : max_tris * 3;
-    if (max_verts > ZS_MAX_VERTICES)
-        max_verts = ZS_MAX_VERTICES;
-    max_edges = o.max_edges ? o.max_edges : ZS_MAX_ACTIVE_EDGES;
-    cfg = zs_config_default((uint16_t)o.width, (uint16_t)o.height, (uint16_t)max_tris,
-                            (uint16_t)max_verts, (uint16_t)max_edges);
-    arena_size = zs_arena_bytes(&cfg);
-    if (arena_size == 0) {
-        fprintf(stderr, "zspan-sim: zs_arena_bytes: invalid configuration\n");
+    cfg = zs_app_config(o.width, o.height,
+                        o.max_tris ? (unsigned long)o.max_tris : scene.total_tris * 3ul + 64u,
+                        (unsigned long)o.max_verts, (unsigned long)o.max_edges);
+    arena = zs_app_renderer(&r, &cfg, &arena_size, SIM_PROG);
+    if (arena == NULL)
         goto done;
-    }
-    arena = malloc(arena_size);
-    if (arena == NULL) {
-        fprintf(stderr, "zspan-sim: cannot allocate an arena of %lu bytes\n",
-                (unsigned long)arena_size);
-        goto done;
-    }
-    st = zs_init(&r, arena, arena_size, &cfg);
-    if (st != ZS_OK) {
-        rc = core_error("zs_init", st);
-        goto done;
-    }
     st = zs_camera_look_at(&cam, eye, target, up);
     if (st != ZS_OK) {
         rc = core_error("zs_camera_look_at (--eye/--target/--up)", st);
@@ -483,8 +450,8 @@ int sim_cmd_render(int argc, char **argv)
                 default_light(&o, ld);
             }
             if (vec_to_fixed("--light", ld, &lv) != 0 ||
-                sim_to_fixed("--ambient", ambient, &sp.ambient) != 0 ||
-                sim_to_fixed("--light", intensity, &sp.lights[0].intensity) != 0) {
+                zs_opt_fixed(SIM_PROG, "--ambient", ambient, &sp.ambient) != 0 ||
+                zs_opt_fixed(SIM_PROG, "--light", intensity, &sp.lights[0].intensity) != 0) {
                 rc = SIM_EXIT_USAGE;
                 goto done;
             }
@@ -494,8 +461,8 @@ int sim_cmd_render(int argc, char **argv)
         if (o.fog) {
             sp.fog.enabled = 1;
             sp.fog.color = o.fog_color;
-            if (sim_to_fixed("--fog", o.fog_start, &sp.fog.start) != 0 ||
-                sim_to_fixed("--fog", o.fog_end, &sp.fog.end) != 0) {
+            if (zs_opt_fixed(SIM_PROG, "--fog", o.fog_start, &sp.fog.start) != 0 ||
+                zs_opt_fixed(SIM_PROG, "--fog", o.fog_end, &sp.fog.end) != 0) {
                 rc = SIM_EXIT_USAGE;
                 goto done;
             }
@@ -580,7 +547,7 @@ done:
         fclose(dump);
     free(img);
     free(arena);
-    sim_scene_free(&scene);
+    zs_model_free(&scene);
     free(o.files);
     return rc;
 }

@@ -46,25 +46,8 @@ void sim_register_command(const sim_command *cmd);
         sim_register_command(&sim_command_##ident);                                           \
     }
 
-/* ---- parsing (return 0 on success, -1 with a message on stderr) ---------- */
-
-/* A finite decimal number, the whole string. */
-int sim_parse_double(const char *opt, const char *s, double *out);
-/* n comma-separated decimal numbers. */
-int sim_parse_doubles(const char *opt, const char *s, double *out, int n);
-/* An integer in [lo, hi]. */
-int sim_parse_long(const char *opt, const char *s, long lo, long hi, long *out);
-/* RRGGBB (six hex digits, optional leading '#' or 0x). */
-int sim_parse_color(const char *opt, const char *s, zs_color *out);
-/* WxH, each 1..ZS_MAX_DIM. */
-int sim_parse_size(const char *opt, const char *s, int *w, int *h);
-/* Decimal value -> Q16.16, rounded to nearest; -1 if out of the Q16.16 range. */
-int sim_to_fixed(const char *what, double v, zs_fixed *out);
-
-/* Matches "--name VALUE" and "--name=VALUE" at argv[*i]; on a match sets
- * *value, advances *i past the value and returns 1. Returns -1 (message
- * printed) when the value is missing, 0 when argv[*i] is another option. */
-int sim_opt_value(int argc, char **argv, int *i, const char *name, const char **value);
+/* Program name in messages; the option parsers are app/zs_opts.h. */
+#define SIM_PROG "zspan-sim"
 
 /* ---- output ------------------------------------------------------------- */
 

@@ -13,6 +13,8 @@
 
 #include "demo_scene.h"
 #include "png_out.h"
+#include "zs_arena.h"
+#include "zs_opts.h"
 
 #define SIM_MAX_COMMANDS 16
 static const sim_command *extra_commands[SIM_MAX_COMMANDS];
@@ -130,47 +132,30 @@ int sim_cmd_demo(int argc, char **argv)
     uint8_t *img = NULL, *other = NULL;
     size_t arena_size, stride;
     double ms = 0.0, ms_other = 0.0;
-    long max_tris, max_verts;
 
     for (i = 1; i < argc; i++) {
         const char *v = NULL;
         int m;
         if (strcmp(argv[i], "--no-compare") == 0) {
             compare = 0;
-        } else if ((m = sim_opt_value(argc, argv, &i, "--out", &v)) != 0) {
+        } else if ((m = zs_opt_value(argc, argv, &i, "--out", &v, SIM_PROG)) != 0) {
             if (m < 0)
                 return SIM_EXIT_USAGE;
             out = v;
-        } else if ((m = sim_opt_value(argc, argv, &i, "--mode", &v)) != 0) {
-            if (m < 0)
+        } else if ((m = zs_opt_value(argc, argv, &i, "--mode", &v, SIM_PROG)) != 0) {
+            if (m < 0 || zs_opt_mode(SIM_PROG, v, &mode) != 0)
                 return SIM_EXIT_USAGE;
-            if (strcmp(v, "span") == 0) {
-                mode = ZS_MODE_SPAN;
-            } else if (strcmp(v, "zline") == 0) {
-                mode = ZS_MODE_ZLINE;
-            } else {
-                fprintf(stderr, "zspan-sim: --mode: '%s' is not span or zline\n", v);
+        } else if ((m = zs_opt_value(argc, argv, &i, "--shade", &v, SIM_PROG)) != 0) {
+            if (m < 0 || zs_opt_shade(SIM_PROG, v, &shading) != 0)
                 return SIM_EXIT_USAGE;
-            }
-        } else if ((m = sim_opt_value(argc, argv, &i, "--shade", &v)) != 0) {
-            if (m < 0)
+        } else if ((m = zs_opt_value(argc, argv, &i, "--size", &v, SIM_PROG)) != 0) {
+            if (m < 0 || zs_opt_size(SIM_PROG, "--size", v, &width, &height) != 0)
                 return SIM_EXIT_USAGE;
-            if (strcmp(v, "flat") == 0) {
-                shading = ZS_SHADE_FLAT;
-            } else if (strcmp(v, "gouraud") == 0) {
-                shading = ZS_SHADE_GOURAUD;
-            } else {
-                fprintf(stderr, "zspan-sim: --shade: '%s' is not flat or gouraud\n", v);
+        } else if ((m = zs_opt_value(argc, argv, &i, "--frame", &v, SIM_PROG)) != 0) {
+            if (m < 0 || zs_opt_long(SIM_PROG, "--frame", v, 0, 1000000000L, &frame) != 0)
                 return SIM_EXIT_USAGE;
-            }
-        } else if ((m = sim_opt_value(argc, argv, &i, "--size", &v)) != 0) {
-            if (m < 0 || sim_parse_size("--size", v, &width, &height) != 0)
-                return SIM_EXIT_USAGE;
-        } else if ((m = sim_opt_value(argc, argv, &i, "--frame", &v)) != 0) {
-            if (m < 0 || sim_parse_long("--frame", v, 0, 1000000000L, &frame) != 0)
-                return SIM_EXIT_USAGE;
-        } else if ((m = sim_opt_value(argc, argv, &i, "--band", &v)) != 0) {
-            if (m < 0 || sim_parse_long("--band", v, 1, ZS_MAX_DIM, &band) != 0)
+        } else if ((m = zs_opt_value(argc, argv, &i, "--band", &v, SIM_PROG)) != 0) {
+            if (m < 0 || zs_opt_long(SIM_PROG, "--band", v, 1, ZS_MAX_DIM, &band) != 0)
                 return SIM_EXIT_USAGE;
         } else {
             fprintf(stderr, "zspan-sim: demo: unknown argument '%s' (see zspan-sim --help)\n",
@@ -180,30 +165,15 @@ int sim_cmd_demo(int argc, char **argv)
     }
 
     demo_scene_init(&scene);
-    max_tris = 3L * DEMO_TRIANGLES;
-    if (max_tris > ZS_MAX_TRIANGLES)
-        max_tris = ZS_MAX_TRIANGLES;
-    max_verts = 3L * max_tris;
-    if (max_verts > ZS_MAX_VERTICES)
-        max_verts = ZS_MAX_VERTICES;
-    cfg = zs_config_default((uint16_t)width, (uint16_t)height, (uint16_t)max_tris,
-                            (uint16_t)max_verts, (uint16_t)ZS_MAX_ACTIVE_EDGES);
-    arena_size = zs_arena_bytes(&cfg);
-    if (arena_size == 0) {
-        fprintf(stderr, "zspan-sim: zs_arena_bytes: invalid configuration\n");
-        return SIM_EXIT_FAIL;
-    }
-    arena = malloc(arena_size);
+    cfg = zs_app_config(width, height, 3ul * DEMO_TRIANGLES, 0, 0);
+    arena = zs_app_renderer(&r, &cfg, &arena_size, SIM_PROG);
     stride = (size_t)width * 3u;
     img = calloc((size_t)height, stride);
     other = calloc((size_t)height, stride);
-    if (arena == NULL || img == NULL || other == NULL) {
-        fprintf(stderr, "zspan-sim: out of memory\n");
+    if (arena == NULL)
         goto done;
-    }
-    st = zs_init(&r, arena, arena_size, &cfg);
-    if (st != ZS_OK) {
-        fprintf(stderr, "zspan-sim: zs_init: %s\n", zs_strerror(st));
+    if (img == NULL || other == NULL) {
+        fprintf(stderr, "zspan-sim: out of memory\n");
         goto done;
     }
     st = demo_render(&r, &scene, (uint32_t)frame, mode, shading, img, stride, height, (int)band,

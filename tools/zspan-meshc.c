@@ -17,6 +17,7 @@
 
 #include <ctype.h>
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <signal.h>
 #include <stdarg.h>
@@ -27,6 +28,9 @@
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
+#include "zs_import.h"
+#include "zs_opts.h"
 
 #define MESHC_VERSION "1.0"
 #define MAX_OUT 65535u              /* uint16 indices and counts */
@@ -199,64 +203,6 @@ static void add_tri(model *m, const tri *t)
     m->t[m->nt++] = *t;
 }
 
-typedef struct mat4 {
-    double a[4][4];
-} mat4;
-
-static mat4 mat4_from_ai(const struct aiMatrix4x4 *m)
-{
-    mat4 r;
-    r.a[0][0] = m->a1; r.a[0][1] = m->a2; r.a[0][2] = m->a3; r.a[0][3] = m->a4;
-    r.a[1][0] = m->b1; r.a[1][1] = m->b2; r.a[1][2] = m->b3; r.a[1][3] = m->b4;
-    r.a[2][0] = m->c1; r.a[2][1] = m->c2; r.a[2][2] = m->c3; r.a[2][3] = m->c4;
-    r.a[3][0] = m->d1; r.a[3][1] = m->d2; r.a[3][2] = m->d3; r.a[3][3] = m->d4;
-    return r;
-}
-
-static mat4 mat4_mul(const mat4 *a, const mat4 *b)
-{
-    mat4 r;
-    int i, j, k;
-    for (i = 0; i < 4; i++)
-        for (j = 0; j < 4; j++) {
-            double s = 0;
-            for (k = 0; k < 4; k++)
-                s += a->a[i][k] * b->a[k][j];
-            r.a[i][j] = s;
-        }
-    return r;
-}
-
-static uint32_t color_from_floats(double r, double g, double b)
-{
-    double c[3];
-    uint32_t out = 0;
-    int i;
-    c[0] = r; c[1] = g; c[2] = b;
-    for (i = 0; i < 3; i++) {
-        double x = c[i];
-        long q;
-        if (!(x > 0))
-            x = 0;
-        if (x > 1)
-            x = 1;
-        q = lround(x * 255.0);
-        out = (out << 8) | (uint32_t)q;
-    }
-    return out;
-}
-
-static uint32_t material_color(const struct aiScene *s, unsigned mat_index)
-{
-    struct aiColor4D c;
-    if (mat_index >= s->mNumMaterials || !s->mMaterials || !s->mMaterials[mat_index])
-        return 0xFFFFFFu;
-    if (aiGetMaterialColor(s->mMaterials[mat_index], AI_MATKEY_COLOR_DIFFUSE, &c) ==
-        aiReturn_SUCCESS)
-        return color_from_floats(c.r, c.g, c.b);
-    return 0xFFFFFFu;
-}
-
 static void check_mesh(const struct aiMesh *me, unsigned idx)
 {
     unsigned f;
@@ -282,90 +228,72 @@ static void check_mesh(const struct aiMesh *me, unsigned idx)
     }
 }
 
-static void collect_node(const options *o, const struct aiScene *s, const struct aiNode *node,
-                         const mat4 *parent, model *m, int depth)
+typedef struct collect_ctx {
+    const options *o;
+    model *m;
+} collect_ctx;
+
+/* One mesh placed by its node (zs_import_walk callback): every vertex, and
+ * its faces as triangles (fans for anything triangulation left). */
+static int collect_mesh(void *user, const zs_import_part *part)
 {
-    mat4 local, world;
-    double nm[3][3]; /* cofactor matrix: transforms normals (inverse transpose up to scale) */
-    unsigned i, k;
-    if (depth > 256)
-        die(EXIT_INPUT, "node hierarchy deeper than 256 levels");
-    local = mat4_from_ai(&node->mTransformation);
-    world = mat4_mul(parent, &local);
-    for (i = 0; i < 3; i++)
-        for (k = 0; k < 3; k++) {
-            int i1 = (int)(i + 1) % 3, i2 = (int)(i + 2) % 3;
-            int k1 = (int)(k + 1) % 3, k2 = (int)(k + 2) % 3;
-            nm[i][k] = world.a[i1][k1] * world.a[i2][k2] - world.a[i1][k2] * world.a[i2][k1];
+    const collect_ctx *cc = user;
+    const options *o = cc->o;
+    model *m = cc->m;
+    const struct aiMesh *me = part->mesh;
+    size_t base = m->nv;
+    unsigned vi, f;
+    uint32_t mcol = 0xFFFFFFu;
+
+    (void)zs_import_material_color(part->scene, me->mMaterialIndex, &mcol);
+    for (vi = 0; vi < me->mNumVertices; vi++) {
+        vert v;
+        memset(&v, 0, sizeof v);
+        zs_import_position(part, vi, v.p);
+        if (o->normals == NRM_FILE && me->mNormals)
+            zs_import_normal(part, vi, v.n);
+        if (o->colors == COL_VERTEX) {
+            if (me->mColors[0]) {
+                v.c[0] = me->mColors[0][vi].r;
+                v.c[1] = me->mColors[0][vi].g;
+                v.c[2] = me->mColors[0][vi].b;
+            } else {
+                v.c[0] = (double)((mcol >> 16) & 255) / 255.0;
+                v.c[1] = (double)((mcol >> 8) & 255) / 255.0;
+                v.c[2] = (double)(mcol & 255) / 255.0;
+            }
         }
-    for (i = 0; i < node->mNumMeshes; i++) {
-        const struct aiMesh *me;
-        size_t base = m->nv;
-        unsigned vi, f;
-        uint32_t mcol;
-        if (!node->mMeshes || node->mMeshes[i] >= s->mNumMeshes)
-            die(EXIT_INPUT, "node refers to a missing mesh");
-        me = s->mMeshes[node->mMeshes[i]];
-        mcol = material_color(s, me->mMaterialIndex);
-        for (vi = 0; vi < me->mNumVertices; vi++) {
-            vert v;
-            const struct aiVector3D *p = &me->mVertices[vi];
-            int r;
-            memset(&v, 0, sizeof v);
-            for (r = 0; r < 3; r++)
-                v.p[r] = world.a[r][0] * p->x + world.a[r][1] * p->y + world.a[r][2] * p->z +
-                         world.a[r][3];
-            if (o->normals == NRM_FILE && me->mNormals) {
-                const struct aiVector3D *n = &me->mNormals[vi];
-                double len;
-                for (r = 0; r < 3; r++)
-                    v.n[r] = nm[r][0] * n->x + nm[r][1] * n->y + nm[r][2] * n->z;
-                len = sqrt(v.n[0] * v.n[0] + v.n[1] * v.n[1] + v.n[2] * v.n[2]);
-                for (r = 0; r < 3; r++)
-                    v.n[r] = len > 0 ? v.n[r] / len : 0;
-            }
-            if (o->colors == COL_VERTEX) {
-                if (me->mColors[0]) {
-                    v.c[0] = me->mColors[0][vi].r;
-                    v.c[1] = me->mColors[0][vi].g;
-                    v.c[2] = me->mColors[0][vi].b;
-                } else {
-                    v.c[0] = (double)((mcol >> 16) & 255) / 255.0;
-                    v.c[1] = (double)((mcol >> 8) & 255) / 255.0;
-                    v.c[2] = (double)(mcol & 255) / 255.0;
-                }
-            }
-            add_vert(m, &v);
+        add_vert(m, &v);
+    }
+    for (f = 0; f < me->mNumFaces; f++) {
+        const struct aiFace *fc = &me->mFaces[f];
+        unsigned k2;
+        if (fc->mNumIndices < 3) {
+            m->skipped_prims++;
+            continue;
         }
-        for (f = 0; f < me->mNumFaces; f++) {
-            const struct aiFace *fc = &me->mFaces[f];
-            unsigned k2;
-            if (fc->mNumIndices < 3) {
-                m->skipped_prims++;
-                continue;
-            }
-            /* Triangulated by assimp; a fan covers anything left (convex). */
-            for (k2 = 1; k2 + 1 < fc->mNumIndices; k2++) {
-                tri t;
-                t.v[0] = (uint32_t)(base + fc->mIndices[0]);
-                t.v[1] = (uint32_t)(base + fc->mIndices[k2]);
-                t.v[2] = (uint32_t)(base + fc->mIndices[k2 + 1]);
-                t.color = mcol;
-                add_tri(m, &t);
-            }
+        /* Triangulated by assimp; a fan covers anything left (convex). A
+         * mirroring node transform turns the winding over: keep fronts in front. */
+        for (k2 = 1; k2 + 1 < fc->mNumIndices; k2++) {
+            unsigned b = part->mirrored ? k2 + 1 : k2, c = part->mirrored ? k2 : k2 + 1;
+            tri t;
+            t.v[0] = (uint32_t)(base + fc->mIndices[0]);
+            t.v[1] = (uint32_t)(base + fc->mIndices[b]);
+            t.v[2] = (uint32_t)(base + fc->mIndices[c]);
+            t.color = mcol;
+            add_tri(m, &t);
         }
     }
-    for (i = 0; i < node->mNumChildren; i++)
-        if (node->mChildren && node->mChildren[i])
-            collect_node(o, s, node->mChildren[i], &world, m, depth + 1);
+    return 0;
 }
 
 static void import_model(const options *o, model *m)
 {
     const struct aiScene *s;
     struct aiLogStream ls;
-    mat4 id;
+    collect_ctx cc;
     unsigned i;
+    int rc;
     FILE *probe;
     struct stat st;
     rlim_t limit = 0;
@@ -433,12 +361,15 @@ static void import_model(const options *o, model *m)
     if (g_log_error_count && !o->lenient)
         die(EXIT_INPUT, "the importer reported problems (use --lenient to convert anyway):%s",
             g_log_errors);
-    memset(&id, 0, sizeof id);
-    for (i = 0; i < 4; i++)
-        id.a[i][i] = 1;
     if (!s->mRootNode)
         die(EXIT_INPUT, "the model has no scene graph");
-    collect_node(o, s, s->mRootNode, &id, m, 0);
+    cc.o = o;
+    cc.m = m;
+    rc = zs_import_walk(s, collect_mesh, &cc);
+    if (rc == ZS_IMPORT_ERR_MESH)
+        die(EXIT_INPUT, "node refers to a missing mesh");
+    if (rc == ZS_IMPORT_ERR_DEPTH)
+        die(EXIT_INPUT, "node hierarchy deeper than %d levels", ZS_IMPORT_MAX_DEPTH);
     aiReleaseImport(s);
     aiDetachAllLogStreams();
     for (i = 0; i < m->nv; i++) {
@@ -933,7 +864,7 @@ static void write_files(const options *o, const model *m, const char *name, long
         for (i = 0; i < m->nv; i++) {
             char s[16];
             sprintf(s, "0x%06lX",
-                    (unsigned long)color_from_floats(m->v[i].c[0], m->v[i].c[1], m->v[i].c[2]));
+                    (unsigned long)zs_import_color(m->v[i].c[0], m->v[i].c[1], m->v[i].c[2]));
             emit_val(&e, s);
         }
         emit_end(&e);
@@ -1063,36 +994,50 @@ static void usage(FILE *f)
         "5 cannot write the output.\n");
 }
 
-static unsigned long parse_count(const char *opt, const char *s)
+/* Option messages say "zspan-meshc: error: ..." like every other failure. */
+#define OPT_PROG "zspan-meshc: error"
+
+/* A positive decimal number (--fit, --scale). */
+static double positive_arg(const char *opt, const char *v)
 {
-    char *end;
-    unsigned long v;
-    errno = 0;
-    v = strtoul(s, &end, 10);
-    if (errno || *end || v == 0 || v > MAX_OUT || s[0] == '-') {
-        fprintf(stderr, "%s: error: %s needs an integer in 1..%u, got '%s'\n", g_prog, opt,
-                MAX_OUT, s);
+    double x;
+    if (zs_opt_double(OPT_PROG, opt, v, &x) != 0)
+        exit(EXIT_USAGE);
+    if (!(x > 0)) {
+        fprintf(stderr, "%s: error: %s needs a positive number, got '%s'\n", g_prog, opt, v);
         exit(EXIT_USAGE);
     }
-    return v;
+    return x;
 }
 
-static double parse_double(const char *opt, const char *s)
+/* An integer option "NAME N" at argv[*i] (1 = matched). */
+static int long_arg(int argc, char **argv, int *i, const char *name, long lo, long hi, long *out)
 {
-    char *end;
-    double v;
-    errno = 0;
-    v = strtod(s, &end);
-    if (errno || *end || !isfinite(v) || v <= 0) {
-        fprintf(stderr, "%s: error: %s needs a positive number, got '%s'\n", g_prog, opt, s);
+    int m = zs_opt_long_at(argc, argv, i, name, lo, hi, out, OPT_PROG);
+    if (m < 0)
         exit(EXIT_USAGE);
-    }
-    return v;
+    return m;
+}
+
+/* A string option "NAME VALUE" (or a short alias) at argv[*i] (1 = matched). */
+static int str_arg(int argc, char **argv, int *i, const char *name, const char *alias,
+                   const char **out)
+{
+    int m = zs_opt_value(argc, argv, i, name, out, OPT_PROG);
+    if (m == 0 && alias != NULL)
+        m = zs_opt_value(argc, argv, i, alias, out, OPT_PROG);
+    if (m < 0)
+        exit(EXIT_USAGE);
+    return m;
 }
 
 static void parse_args(int argc, char **argv, options *o)
 {
-    int i;
+    static const char *const color_srcs[] = {"none", "material", "vertex", "index"};
+    static const char *const normal_kinds[] = {"none", "face", "smooth", "file"};
+    const char *v;
+    long n;
+    int i, k;
     memset(o, 0, sizeof *o);
     o->scale = 1.0;
     o->merge = 1;
@@ -1101,108 +1046,42 @@ static void parse_args(int argc, char **argv, options *o)
     o->mem_limit_mb = -1;
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];
-#define NEED_ARG()                                                                         \
-    do {                                                                                   \
-        if (i + 1 >= argc) {                                                               \
-            fprintf(stderr, "%s: error: %s needs an argument\n", g_prog, a);               \
-            exit(EXIT_USAGE);                                                              \
-        }                                                                                  \
-    } while (0)
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
             usage(stdout);
             exit(0);
-        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
-            NEED_ARG();
-            o->output = argv[++i];
-        } else if (!strcmp(a, "-n") || !strcmp(a, "--name")) {
-            NEED_ARG();
-            o->name = argv[++i];
+        } else if (str_arg(argc, argv, &i, "--output", "-o", &o->output) ||
+                   str_arg(argc, argv, &i, "--name", "-n", &o->name)) {
+            continue;
         } else if (!strcmp(a, "--center")) {
             o->center = 1;
-        } else if (!strcmp(a, "--fit")) {
-            NEED_ARG();
+        } else if (str_arg(argc, argv, &i, "--fit", NULL, &v)) {
             o->fit = 1;
-            o->fit_radius = parse_double(a, argv[++i]);
+            o->fit_radius = positive_arg("--fit", v);
         } else if (!strcmp(a, "--normalize")) {
             o->center = 1;
             o->fit = 1;
             o->fit_radius = 1.0;
-        } else if (!strcmp(a, "--scale")) {
-            NEED_ARG();
-            o->scale = parse_double(a, argv[++i]);
-        } else if (!strcmp(a, "--quant-scale")) {
-            char *end;
-            NEED_ARG();
-            errno = 0;
-            o->quant_scale = strtol(argv[++i], &end, 0);
-            if (errno || *end || o->quant_scale <= 0 || o->quant_scale > 0x7FFFFFFF) {
-                fprintf(stderr, "%s: error: --quant-scale needs a positive integer\n", g_prog);
+        } else if (str_arg(argc, argv, &i, "--scale", NULL, &v)) {
+            o->scale = positive_arg("--scale", v);
+        } else if (long_arg(argc, argv, &i, "--quant-scale", 1, 0x7FFFFFFF, &o->quant_scale)) {
+            continue;
+        } else if (long_arg(argc, argv, &i, "--max-triangles", 1, MAX_OUT, &n)) {
+            o->max_tris = (unsigned long)n;
+        } else if (long_arg(argc, argv, &i, "--max-vertices", 1, MAX_OUT, &n)) {
+            o->max_verts = (unsigned long)n;
+        } else if (str_arg(argc, argv, &i, "--colors", "--colours", &v)) {
+            if (zs_opt_choice(OPT_PROG, "--colors", v, color_srcs, 4, &k) != 0)
                 exit(EXIT_USAGE);
-            }
-        } else if (!strcmp(a, "--max-triangles")) {
-            NEED_ARG();
-            o->max_tris = parse_count(a, argv[++i]);
-        } else if (!strcmp(a, "--max-vertices")) {
-            NEED_ARG();
-            o->max_verts = parse_count(a, argv[++i]);
-        } else if (!strcmp(a, "--colors") || !strcmp(a, "--colours")) {
-            const char *v;
-            NEED_ARG();
-            v = argv[++i];
-            if (!strcmp(v, "none"))
-                o->colors = COL_NONE;
-            else if (!strcmp(v, "material"))
-                o->colors = COL_MATERIAL;
-            else if (!strcmp(v, "vertex"))
-                o->colors = COL_VERTEX;
-            else if (!strcmp(v, "index"))
-                o->colors = COL_INDEX;
-            else {
-                fprintf(stderr, "%s: error: --colors: unknown source '%s' "
-                                "(none, material, vertex, index)\n", g_prog, v);
+            o->colors = (enum color_src)k;
+        } else if (str_arg(argc, argv, &i, "--color", "--colour", &v)) {
+            if (zs_opt_color(OPT_PROG, "--color", v, &o->base_color) != 0)
                 exit(EXIT_USAGE);
-            }
-        } else if (!strcmp(a, "--color") || !strcmp(a, "--colour")) {
-            char *end;
-            const char *v;
-            unsigned long c;
-            NEED_ARG();
-            v = argv[++i];
-            if (v[0] == '#')
-                v++;
-            errno = 0;
-            c = strtoul(v, &end, 16);
-            if (errno || *end || strlen(v) != 6) {
-                fprintf(stderr, "%s: error: --color needs RRGGBB hex, got '%s'\n", g_prog, v);
+        } else if (str_arg(argc, argv, &i, "--normals", NULL, &v)) {
+            if (zs_opt_choice(OPT_PROG, "--normals", v, normal_kinds, 4, &k) != 0)
                 exit(EXIT_USAGE);
-            }
-            o->base_color = (uint32_t)c;
-        } else if (!strcmp(a, "--normals")) {
-            const char *v;
-            NEED_ARG();
-            v = argv[++i];
-            if (!strcmp(v, "none"))
-                o->normals = NRM_NONE;
-            else if (!strcmp(v, "face"))
-                o->normals = NRM_FACE;
-            else if (!strcmp(v, "smooth"))
-                o->normals = NRM_SMOOTH;
-            else if (!strcmp(v, "file"))
-                o->normals = NRM_FILE;
-            else {
-                fprintf(stderr, "%s: error: --normals: unknown kind '%s' "
-                                "(none, face, smooth, file)\n", g_prog, v);
-                exit(EXIT_USAGE);
-            }
-        } else if (!strcmp(a, "--mem-limit")) {
-            char *end;
-            NEED_ARG();
-            errno = 0;
-            o->mem_limit_mb = strtol(argv[++i], &end, 10);
-            if (errno || *end || o->mem_limit_mb < 0) {
-                fprintf(stderr, "%s: error: --mem-limit needs a size in MB\n", g_prog);
-                exit(EXIT_USAGE);
-            }
+            o->normals = (enum normal_kind)k;
+        } else if (long_arg(argc, argv, &i, "--mem-limit", 0, LONG_MAX >> 20, &o->mem_limit_mb)) {
+            continue;
         } else if (!strcmp(a, "--no-merge")) {
             o->merge = 0;
         } else if (!strcmp(a, "--flip-winding")) {
@@ -1223,7 +1102,6 @@ static void parse_args(int argc, char **argv, options *o)
                     o->input, a);
             exit(EXIT_USAGE);
         }
-#undef NEED_ARG
     }
     if (!o->input) {
         usage(stderr);

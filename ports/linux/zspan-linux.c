@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "zs_app.h"
+#include "zs_opts.h"
 #include "zs_linux.h"
 
 static const char *prog = "zspan-linux";
@@ -34,7 +35,7 @@ static void usage(FILE *f)
             "  --sclk N --mosi N [--cs N]   its clock, data and chip-select lines\n\n"
             "%s\n"
             "Exit status: 0 ok, 1 error, 2 usage, 3 the bus failed during the run.\n",
-            prog, zs_app_usage);
+            prog, ZS_APP_USAGE);
 }
 
 static const char *port_error(void *ctx)
@@ -58,78 +59,56 @@ static void port_report(void *ctx, FILE *f)
                 (unsigned)p->bufsiz, (unsigned)p->cfg.hz, (unsigned long long)p->st.gpio_writes);
 }
 
+/* The wiring options (zs_app_cli.option). */
+static int port_option(void *cfg, int argc, char **argv, int *i)
+{
+    zs_linux_cfg *c = cfg;
+    long v;
+    int m;
+
+    if (strcmp(argv[*i], "--bitbang") == 0) {
+        c->bitbang = 1;
+        return 1;
+    }
+    if ((m = zs_opt_value(argc, argv, i, "--spi", &c->spi_dev, prog)) != 0 ||
+        (m = zs_opt_value(argc, argv, i, "--gpiochip", &c->gpiochip, prog)) != 0)
+        return m;
+#define LINE_OPT(name, lo, hi, field)                                                          \
+    if ((m = zs_opt_long_at(argc, argv, i, name, lo, hi, &v, prog)) != 0)                      \
+        return m > 0 ? (c->field = (__typeof__(c->field))v, 1) : -1;
+    LINE_OPT("--dc", 0, 65535, dc)
+    LINE_OPT("--reset", 0, 65535, reset)
+    LINE_OPT("--backlight", 0, 65535, backlight)
+    LINE_OPT("--sclk", 0, 65535, sclk)
+    LINE_OPT("--mosi", 0, 65535, mosi)
+    LINE_OPT("--cs", 0, 65535, cs)
+    LINE_OPT("--hz", 1000, 200000000L, hz)
+    LINE_OPT("--spi-mode", 0, 3, spi_mode)
+    LINE_OPT("--bits", 1, 32, bits)
+    LINE_OPT("--bufsiz", 1, 1L << 24, bufsiz)
+#undef LINE_OPT
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     zs_app_opts o;
     zs_linux_cfg c = zs_linux_cfg_default();
+    zs_app_cli cli = {NULL, usage, port_option, NULL};
     zs_linux_port port;
     zs_app_port ap;
     char err[512];
-    int i, rc;
-    long v;
+    int rc;
 
-    zs_app_defaults(&o, argc);
-    if (o.meshes == NULL)
-        return 1;
-    for (i = 1; i < argc; i++) {
-        const char *a = argv[i], *s;
-        int m;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            usage(stdout);
-            zs_app_free(&o);
-            return 0;
-        }
-        if (strcmp(a, "--bitbang") == 0) {
-            c.bitbang = 1;
-            continue;
-        }
-        m = zs_app_option(argc, argv, &i, &o, prog);
-        if (m > 0)
-            continue;
-        if (m < 0)
-            goto usage_error;
-        if ((m = zs_opt_value(argc, argv, &i, "--spi", &s, prog)) != 0) {
-            if (m < 0)
-                goto usage_error;
-            c.spi_dev = s;
-            continue;
-        }
-        if ((m = zs_opt_value(argc, argv, &i, "--gpiochip", &s, prog)) != 0) {
-            if (m < 0)
-                goto usage_error;
-            c.gpiochip = s;
-            continue;
-        }
-#define LINE_OPT(name, lo, hi, field)                                                          \
-    if ((m = zs_opt_value(argc, argv, &i, name, &s, prog)) != 0) {                             \
-        if (m < 0 || zs_opt_long(prog, name, s, lo, hi, &v) != 0)                              \
-            goto usage_error;                                                                  \
-        c.field = (__typeof__(c.field))v;                                                      \
-        continue;                                                                              \
-    }
-        LINE_OPT("--dc", 0, 65535, dc)
-        LINE_OPT("--reset", 0, 65535, reset)
-        LINE_OPT("--backlight", 0, 65535, backlight)
-        LINE_OPT("--sclk", 0, 65535, sclk)
-        LINE_OPT("--mosi", 0, 65535, mosi)
-        LINE_OPT("--cs", 0, 65535, cs)
-        LINE_OPT("--hz", 1000, 200000000L, hz)
-        LINE_OPT("--spi-mode", 0, 3, spi_mode)
-        LINE_OPT("--bits", 1, 32, bits)
-        LINE_OPT("--bufsiz", 1, 1L << 24, bufsiz)
-#undef LINE_OPT
-        fprintf(stderr, "%s: unknown option '%s' (see --help)\n", prog, a);
-        goto usage_error;
-    }
-    if (o.list) {
-        zs_app_list_panels(stdout);
-        zs_app_free(&o);
-        return 0;
-    }
+    cli.prog = prog;
+    cli.cfg = &c;
+    if ((rc = zs_app_parse(&o, argc, argv, &cli)) != ZS_APP_PARSED)
+        return rc;
     if (c.dc < 0) {
         fprintf(stderr, "%s: --dc N is required (the GPIO line wired to the panel's D/C pin)\n",
                 prog);
-        goto usage_error;
+        zs_app_free(&o);
+        return 2;
     }
     if (c.bitbang)
         c.spi_dev = NULL;
@@ -148,6 +127,7 @@ int main(int argc, char **argv)
                    prog, c.spi_dev, (unsigned)port.cfg.hz, c.spi_mode, (unsigned)port.bufsiz,
                    c.gpiochip, c.dc, c.reset, c.backlight, port.gpio->api);
     }
+    memset(&ap, 0, sizeof ap);
     ap.name = c.bitbang ? "bit-banged SPI" : "spidev";
     ap.clock_hz = port.cfg.hz;
     ap.error = port_error;
@@ -157,7 +137,4 @@ int main(int argc, char **argv)
     zs_linux_close(&port);
     zs_app_free(&o);
     return rc;
-usage_error:
-    zs_app_free(&o);
-    return 2;
 }

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "zs_app.h"
+#include "zs_opts.h"
 #include "zs_mcp2210.h"
 
 static const char *prog = "zspan-mcp2210";
@@ -32,7 +33,7 @@ static void usage(FILE *f)
             "Throughput: about 60 KB/s (one 64-byte HID report per USB frame): a full 240x240\n"
             "RGB565 frame (115,200 bytes) takes about 2 s. Use --partial.\n"
             "Exit status: 0 ok, 1 error, 2 usage, 3 the device failed or vanished mid-run.\n",
-            prog, zs_app_usage);
+            prog, ZS_APP_USAGE);
 }
 
 static const char *port_error(void *ctx)
@@ -52,63 +53,51 @@ static void port_report(void *ctx, FILE *f)
             (unsigned long long)m->st.settings, (unsigned long long)m->st.gpio);
 }
 
+/* The device and wiring options (zs_app_cli.option). */
+typedef struct mcp_args {
+    zs_mcp2210_cfg c;
+    const char *path;
+} mcp_args;
+
+static int port_option(void *cfg, int argc, char **argv, int *i)
+{
+    mcp_args *a = cfg;
+    long v;
+    int m;
+
+    if ((m = zs_opt_value(argc, argv, i, "--device", &a->path, prog)) != 0)
+        return m;
+#define PIN_OPT(name, lo, hi, field)                                                           \
+    if ((m = zs_opt_long_at(argc, argv, i, name, lo, hi, &v, prog)) != 0)                      \
+        return m > 0 ? (a->c.field = (__typeof__(a->c.field))v, 1) : -1;
+    PIN_OPT("--cs", 0, 8, cs_pin)
+    PIN_OPT("--dc", 0, 8, dc_pin)
+    PIN_OPT("--reset", -1, 8, reset_pin)
+    PIN_OPT("--backlight", -1, 8, backlight_pin)
+    PIN_OPT("--hz", 1000, 12000000L, bit_rate)
+    PIN_OPT("--spi-mode", 0, 3, spi_mode)
+    PIN_OPT("--timeout", 1, 600000L, timeout_ms)
+#undef PIN_OPT
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     zs_app_opts o;
-    zs_mcp2210_cfg c = zs_mcp2210_cfg_default();
+    mcp_args args;
+    zs_app_cli cli = {NULL, usage, port_option, NULL};
     zs_mcp2210 m;
     zs_app_port ap;
-    const char *path = NULL;
     char err[512];
-    int i, rc;
-    long v;
+    int rc;
 
-    zs_app_defaults(&o, argc);
-    if (o.meshes == NULL)
-        return 1;
-    for (i = 1; i < argc; i++) {
-        const char *a = argv[i], *s;
-        int k;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            usage(stdout);
-            zs_app_free(&o);
-            return 0;
-        }
-        k = zs_app_option(argc, argv, &i, &o, prog);
-        if (k > 0)
-            continue;
-        if (k < 0)
-            goto usage_error;
-        if ((k = zs_opt_value(argc, argv, &i, "--device", &s, prog)) != 0) {
-            if (k < 0)
-                goto usage_error;
-            path = s;
-            continue;
-        }
-#define NUM_OPT(name, lo, hi, field)                                                           \
-    if ((k = zs_opt_value(argc, argv, &i, name, &s, prog)) != 0) {                             \
-        if (k < 0 || zs_opt_long(prog, name, s, lo, hi, &v) != 0)                              \
-            goto usage_error;                                                                  \
-        c.field = (__typeof__(c.field))v;                                                      \
-        continue;                                                                              \
-    }
-        NUM_OPT("--cs", 0, 8, cs_pin)
-        NUM_OPT("--dc", 0, 8, dc_pin)
-        NUM_OPT("--reset", -1, 8, reset_pin)
-        NUM_OPT("--backlight", -1, 8, backlight_pin)
-        NUM_OPT("--hz", 1000, 12000000L, bit_rate)
-        NUM_OPT("--spi-mode", 0, 3, spi_mode)
-        NUM_OPT("--timeout", 1, 600000L, timeout_ms)
-#undef NUM_OPT
-        fprintf(stderr, "%s: unknown option '%s' (see --help)\n", prog, a);
-        goto usage_error;
-    }
-    if (o.list) {
-        zs_app_list_panels(stdout);
-        zs_app_free(&o);
-        return 0;
-    }
-    if (zs_mcp2210_open_hidapi(&m, path, &c, err, sizeof err) != 0) {
+    args.c = zs_mcp2210_cfg_default();
+    args.path = NULL;
+    cli.prog = prog;
+    cli.cfg = &args;
+    if ((rc = zs_app_parse(&o, argc, argv, &cli)) != ZS_APP_PARSED)
+        return rc;
+    if (zs_mcp2210_open_hidapi(&m, args.path, &args.c, err, sizeof err) != 0) {
         fprintf(stderr, "%s: %s\n", prog, err);
         zs_app_free(&o);
         return 1;
@@ -116,10 +105,11 @@ int main(int argc, char **argv)
     if (!o.quiet)
         printf("%s: MCP2210 at %u bit/s, SPI mode %u, CS GP%d, D/C GP%d, reset GP%d, "
                "backlight GP%d\n",
-               prog, (unsigned)c.bit_rate, c.spi_mode, c.cs_pin, c.dc_pin, c.reset_pin,
-               c.backlight_pin);
+               prog, (unsigned)args.c.bit_rate, args.c.spi_mode, args.c.cs_pin, args.c.dc_pin,
+               args.c.reset_pin, args.c.backlight_pin);
+    memset(&ap, 0, sizeof ap);
     ap.name = "MCP2210";
-    ap.clock_hz = c.bit_rate;
+    ap.clock_hz = args.c.bit_rate;
     ap.error = port_error;
     ap.report = port_report;
     ap.ctx = &m;
@@ -129,7 +119,4 @@ int main(int argc, char **argv)
     zs_mcp2210_close(&m);
     zs_app_free(&o);
     return rc;
-usage_error:
-    zs_app_free(&o);
-    return 2;
 }

@@ -1,8 +1,7 @@
-/* zspan-sim: assimp mesh loading and quantisation (host only). */
-#include "mesh_load.h"
+/* Mesh files as zs_mesh chunks: loading, fitting, quantisation (see zs_model.h). */
+#include "zs_model.h"
 
 #include <assimp/cimport.h>
-#include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <errno.h>
@@ -11,9 +10,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "zs_import.h"
+
 #define CHUNK_MAX 65535u
 
-static void chunk_free(sim_chunk *c)
+static void chunk_free(zs_model_chunk *c)
 {
     free(c->pos);
     free(c->nrm);
@@ -25,7 +26,7 @@ static void chunk_free(sim_chunk *c)
     memset(c, 0, sizeof *c);
 }
 
-void sim_scene_free(sim_scene *scene)
+void zs_model_free(zs_model *scene)
 {
     size_t i;
 
@@ -35,13 +36,13 @@ void sim_scene_free(sim_scene *scene)
     memset(scene, 0, sizeof *scene);
 }
 
-static sim_chunk *scene_new_chunk(sim_scene *scene)
+static zs_model_chunk *scene_new_chunk(zs_model *scene)
 {
-    sim_chunk *c;
+    zs_model_chunk *c;
 
     if (scene->count == scene->cap) {
         size_t cap = scene->cap ? scene->cap * 2 : 8;
-        sim_chunk *p = realloc(scene->chunks, cap * sizeof *p);
+        zs_model_chunk *p = realloc(scene->chunks, cap * sizeof *p);
         if (p == NULL)
             return NULL;
         scene->chunks = p;
@@ -52,86 +53,8 @@ static sim_chunk *scene_new_chunk(sim_scene *scene)
     return c;
 }
 
-/* Global node transform as a 3x4 affine matrix (row-major). */
-typedef struct affine {
-    double m[3][4];
-} affine;
-
-static affine affine_from_ai(const struct aiMatrix4x4 *a)
-{
-    affine r;
-
-    r.m[0][0] = a->a1; r.m[0][1] = a->a2; r.m[0][2] = a->a3; r.m[0][3] = a->a4;
-    r.m[1][0] = a->b1; r.m[1][1] = a->b2; r.m[1][2] = a->b3; r.m[1][3] = a->b4;
-    r.m[2][0] = a->c1; r.m[2][1] = a->c2; r.m[2][2] = a->c3; r.m[2][3] = a->c4;
-    return r;
-}
-
-/* a * b (apply b first). */
-static affine affine_mul(const affine *a, const affine *b)
-{
-    affine r;
-    int i, j;
-
-    for (i = 0; i < 3; i++) {
-        for (j = 0; j < 4; j++) {
-            double v = a->m[i][0] * b->m[0][j] + a->m[i][1] * b->m[1][j] +
-                       a->m[i][2] * b->m[2][j];
-            if (j == 3)
-                v += a->m[i][3];
-            r.m[i][j] = v;
-        }
-    }
-    return r;
-}
-
-static double affine_det(const affine *a)
-{
-    const double(*m)[4] = a->m;
-
-    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-}
-
-/* Cofactor matrix of the 3x3 part (= det * inverse transpose): maps normals. */
-static void affine_cofactor(const affine *a, double c[3][3])
-{
-    const double(*m)[4] = a->m;
-
-    c[0][0] = m[1][1] * m[2][2] - m[1][2] * m[2][1];
-    c[0][1] = m[1][2] * m[2][0] - m[1][0] * m[2][2];
-    c[0][2] = m[1][0] * m[2][1] - m[1][1] * m[2][0];
-    c[1][0] = m[0][2] * m[2][1] - m[0][1] * m[2][2];
-    c[1][1] = m[0][0] * m[2][2] - m[0][2] * m[2][0];
-    c[1][2] = m[0][1] * m[2][0] - m[0][0] * m[2][1];
-    c[2][0] = m[0][1] * m[1][2] - m[0][2] * m[1][1];
-    c[2][1] = m[0][2] * m[1][0] - m[0][0] * m[1][2];
-    c[2][2] = m[0][0] * m[1][1] - m[0][1] * m[1][0];
-}
-
-static zs_color color_from_ai(const struct aiColor4D *c)
-{
-    double ch[3];
-    unsigned v[3];
-    int k;
-
-    ch[0] = c->r;
-    ch[1] = c->g;
-    ch[2] = c->b;
-    for (k = 0; k < 3; k++) {
-        double x = ch[k];
-        if (!(x > 0.0))
-            x = 0.0;
-        if (x > 1.0)
-            x = 1.0;
-        v[k] = (unsigned)floor(x * 255.0 + 0.5);
-    }
-    return ZS_RGB(v[0], v[1], v[2]);
-}
-
 typedef struct load_ctx {
-    sim_scene *scene;
+    zs_model *scene;
     const struct aiScene *ai;
     const char *path;
     int want_normals;
@@ -139,7 +62,7 @@ typedef struct load_ctx {
     size_t remap_cap;
 } load_ctx;
 
-static int chunk_alloc(sim_chunk *c, uint32_t max_v, uint32_t max_t, int normals, int colors)
+static int chunk_alloc(zs_model_chunk *c, uint32_t max_v, uint32_t max_t, int normals, int colors)
 {
     c->pos = malloc((size_t)max_v * 3 * sizeof *c->pos);
     c->idx = malloc((size_t)max_t * 3 * sizeof *c->idx);
@@ -153,33 +76,22 @@ static int chunk_alloc(sim_chunk *c, uint32_t max_v, uint32_t max_t, int normals
                : -1;
 }
 
-static int add_mesh(load_ctx *lc, const struct aiMesh *m, const affine *xf)
+/* Appends the triangles of one placed mesh (walk callback): only the
+ * vertices faces use, in face order, split into chunks of CHUNK_MAX. */
+static int add_mesh(void *user, const zs_import_part *part)
 {
+    load_ctx *lc = user;
+    const struct aiMesh *m = part->mesh;
     const int normals = lc->want_normals && m->mNormals != NULL;
     const int colors = m->mColors[0] != NULL;
-    const double det = affine_det(xf);
-    const int flip = det < 0.0;
-    double cof[3][3];
-    int has_mat = 0;
     zs_color mat_color = 0;
+    int has_mat;
     uint32_t f, nv = m->mNumVertices, max_v, max_t;
-    sim_chunk *c = NULL;
+    zs_model_chunk *c = NULL;
     size_t k;
 
-    affine_cofactor(xf, cof);
-    if (m->mMaterialIndex < lc->ai->mNumMaterials) {
-        const struct aiMaterial *mat = lc->ai->mMaterials[m->mMaterialIndex];
-        struct aiString name;
-        struct aiColor4D diffuse;
-        int is_default = 0;
-        if (aiGetMaterialString(mat, AI_MATKEY_NAME, &name) == aiReturn_SUCCESS)
-            is_default = strcmp(name.data, AI_DEFAULT_MATERIAL_NAME) == 0;
-        if (!is_default &&
-            aiGetMaterialColor(mat, AI_MATKEY_COLOR_DIFFUSE, &diffuse) == aiReturn_SUCCESS) {
-            has_mat = 1;
-            mat_color = color_from_ai(&diffuse);
-        }
-    }
+    has_mat = zs_import_material_color(lc->ai, m->mMaterialIndex, &mat_color) ==
+              ZS_IMPORT_MAT_FILE;
     if ((size_t)nv > lc->remap_cap) {
         int32_t *p = realloc(lc->remap, (size_t)nv * sizeof *p);
         if (p == NULL)
@@ -224,39 +136,28 @@ static int add_mesh(load_ctx *lc, const struct aiMesh *m, const affine *xf)
         for (j = 0; j < 3; j++) {
             unsigned src = face->mIndices[j];
             if (lc->remap[src] < 0) {
-                const struct aiVector3D *v = &m->mVertices[src];
                 uint32_t d = c->vcount++;
-                lc->scene->total_verts++;
-                double p[3];
+                double *p = &c->pos[3 * d];
                 int a;
+                lc->scene->total_verts++;
+                zs_import_position(part, src, p);
                 for (a = 0; a < 3; a++) {
-                    p[a] = xf->m[a][0] * v->x + xf->m[a][1] * v->y + xf->m[a][2] * v->z +
-                           xf->m[a][3];
                     if (!isfinite(p[a])) {
                         fprintf(stderr, "zspan-sim: %s: vertex %u is not finite\n", lc->path,
                                 src);
                         return -1;
                     }
-                    c->pos[3 * d + (uint32_t)a] = p[a];
                 }
-                if (normals) {
-                    const struct aiVector3D *n = &m->mNormals[src];
-                    double q[3], len;
-                    for (a = 0; a < 3; a++)
-                        q[a] = (cof[a][0] * n->x + cof[a][1] * n->y + cof[a][2] * n->z) *
-                               (flip ? -1.0 : 1.0);
-                    len = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
-                    for (a = 0; a < 3; a++)
-                        c->nrm[3 * d + (uint32_t)a] =
-                            (len > 0.0 && isfinite(len)) ? q[a] / len : 0.0;
-                }
+                if (normals)
+                    zs_import_normal(part, src, &c->nrm[3 * d]);
                 if (colors)
-                    c->vcol[d] = color_from_ai(&m->mColors[0][src]);
+                    c->vcol[d] = zs_import_color(m->mColors[0][src].r, m->mColors[0][src].g,
+                                                 m->mColors[0][src].b);
                 lc->remap[src] = (int32_t)d;
             }
             tri[j] = (uint16_t)lc->remap[src];
         }
-        if (flip) {
+        if (part->mirrored) {
             /* A mirroring node transform turns the winding over: keep fronts in front. */
             uint16_t t = tri[1];
             tri[1] = tri[2];
@@ -274,35 +175,14 @@ oom:
     return -1;
 }
 
-static int add_node(load_ctx *lc, const struct aiNode *node, const affine *parent)
-{
-    affine local = affine_from_ai(&node->mTransformation);
-    affine global = affine_mul(parent, &local);
-    unsigned i;
-
-    for (i = 0; i < node->mNumMeshes; i++) {
-        unsigned mi = node->mMeshes[i];
-        if (mi >= lc->ai->mNumMeshes)
-            continue;
-        if (add_mesh(lc, lc->ai->mMeshes[mi], &global) != 0)
-            return -1;
-    }
-    for (i = 0; i < node->mNumChildren; i++) {
-        if (add_node(lc, node->mChildren[i], &global) != 0)
-            return -1;
-    }
-    return 0;
-}
-
-int sim_scene_load(sim_scene *scene, const char *path, int want_normals)
+int zs_model_load(zs_model *scene, const char *path, int want_normals)
 {
     const struct aiScene *ai;
     unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices;
     load_ctx lc;
-    affine identity;
     uint32_t before = scene->total_tris;
     FILE *probe;
-    int rc, i, j;
+    int rc;
 
     probe = fopen(path, "rb");
     if (probe == NULL) {
@@ -324,31 +204,32 @@ int sim_scene_load(sim_scene *scene, const char *path, int want_normals)
         aiReleaseImport(ai);
         return -1;
     }
-    for (i = 0; i < 3; i++)
-        for (j = 0; j < 4; j++)
-            identity.m[i][j] = i == j ? 1.0 : 0.0;
     lc.scene = scene;
     lc.ai = ai;
     lc.path = path;
     lc.want_normals = want_normals;
     lc.remap = NULL;
     lc.remap_cap = 0;
-    rc = add_node(&lc, ai->mRootNode, &identity);
+    rc = zs_import_walk(ai, add_mesh, &lc);
+    if (rc == ZS_IMPORT_ERR_MESH || rc == ZS_IMPORT_ERR_DEPTH)
+        fprintf(stderr, "zspan-sim: %s: %s\n", path,
+                rc == ZS_IMPORT_ERR_MESH ? "a node refers to a missing mesh"
+                                         : "node hierarchy too deep");
     free(lc.remap);
     aiReleaseImport(ai);
     if (rc == 0 && scene->total_tris == before)
         fprintf(stderr, "zspan-sim: warning: %s has no triangles\n", path);
-    return rc;
+    return rc == 0 ? 0 : -1;
 }
 
-int sim_scene_bounds(const sim_scene *scene, double lo[3], double hi[3])
+int zs_model_bounds(const zs_model *scene, double lo[3], double hi[3])
 {
     size_t i;
     uint32_t v;
     int a, any = 0;
 
     for (i = 0; i < scene->count; i++) {
-        const sim_chunk *c = &scene->chunks[i];
+        const zs_model_chunk *c = &scene->chunks[i];
         for (v = 0; v < c->vcount; v++) {
             for (a = 0; a < 3; a++) {
                 double x = c->pos[3 * v + (uint32_t)a];
@@ -363,28 +244,28 @@ int sim_scene_bounds(const sim_scene *scene, double lo[3], double hi[3])
     return any;
 }
 
-void sim_scene_transform(sim_scene *scene, const double centre[3], double factor)
+void zs_model_transform(zs_model *scene, const double centre[3], double factor)
 {
     size_t i;
     uint32_t v;
     int a;
 
     for (i = 0; i < scene->count; i++) {
-        sim_chunk *c = &scene->chunks[i];
+        zs_model_chunk *c = &scene->chunks[i];
         for (v = 0; v < c->vcount; v++)
             for (a = 0; a < 3; a++)
                 c->pos[3 * v + (uint32_t)a] = (c->pos[3 * v + (uint32_t)a] - centre[a]) * factor;
     }
 }
 
-double sim_scene_radius(const sim_scene *scene, const double c[3])
+double zs_model_radius(const zs_model *scene, const double c[3])
 {
     double best = 0.0;
     size_t i;
     uint32_t v;
 
     for (i = 0; i < scene->count; i++) {
-        const sim_chunk *ch = &scene->chunks[i];
+        const zs_model_chunk *ch = &scene->chunks[i];
         for (v = 0; v < ch->vcount; v++) {
             const double *p = &ch->pos[3 * v];
             double dx = p[0] - c[0], dy = p[1] - c[1], dz = p[2] - c[2];
@@ -405,13 +286,13 @@ static int16_t clamp16(double v, double lim)
     return (int16_t)v;
 }
 
-int sim_scene_quantize(sim_scene *scene)
+int zs_model_quantize(zs_model *scene)
 {
     size_t i;
     uint32_t k, n;
 
     for (i = 0; i < scene->count; i++) {
-        sim_chunk *c = &scene->chunks[i];
+        zs_model_chunk *c = &scene->chunks[i];
         double maxabs = 0.0, scale;
 
         n = c->vcount * 3;
@@ -457,7 +338,7 @@ oom:
     return -1;
 }
 
-zs_status sim_scene_frame(zs_renderer *r, const sim_scene *scene, zs_visibility mode,
+zs_status zs_model_frame(zs_renderer *r, const zs_model *scene, zs_visibility mode,
                           zs_shading shade, double deg, zs_format fmt)
 {
     zs_camera cam;
@@ -491,21 +372,21 @@ zs_status sim_scene_frame(zs_renderer *r, const sim_scene *scene, zs_visibility 
     return ZS_OK;
 }
 
-int sim_scene_fit_and_colour(sim_scene *scene)
+int zs_model_fit_and_colour(zs_model *scene)
 {
     double lo[3], hi[3], c[3], radius;
     size_t i;
     int f;
-    if (sim_scene_bounds(scene, lo, hi)) {
+    if (zs_model_bounds(scene, lo, hi)) {
         for (f = 0; f < 3; f++)
             c[f] = 0.5 * (lo[f] + hi[f]);
-        radius = sim_scene_radius(scene, c);
-        sim_scene_transform(scene, c, radius > 0.0 ? 1.0 / radius : 1.0);
+        radius = zs_model_radius(scene, c);
+        zs_model_transform(scene, c, radius > 0.0 ? 1.0 / radius : 1.0);
     }
-    if (sim_scene_quantize(scene) != 0)
+    if (zs_model_quantize(scene) != 0)
         return -1;
     for (i = 0; i < scene->count; i++) {
-        sim_chunk *ch = &scene->chunks[i];
+        zs_model_chunk *ch = &scene->chunks[i];
         uint32_t t;
         if (ch->vcol != NULL || ch->has_material_color || ch->tcount == 0)
             continue;

@@ -1,8 +1,7 @@
 /*
- * Worked example: STM32F411 ("Black Pill" STM32F411CEU6 or Nucleo-F411RE)
- * driving a 240x240 ST7789 module over SPI1 with DMA, rendering the spinning
- * sphere285 benchmark scene one line at a time into two 480-byte line
- * buffers (one is rendered while DMA sends the other).
+ * Board layer of the STM32F411 ("Black Pill" STM32F411CEU6 or Nucleo-F411RE)
+ * with an SPI panel on SPI1 + DMA2 stream 3 (see board_f411.h); the example
+ * application is examples/stm32f411-st7789/.
  *
  * Wiring (3.3 V):  PA5 SPI1_SCK -> SCL,  PA7 SPI1_MOSI -> SDA,
  *                  PA4 -> CS,  PA3 -> DC,  PA2 -> RES,  PA1 -> BLK (backlight)
@@ -10,17 +9,11 @@
  * Clock: HSI 16 MHz -> PLL (M 16, N 336, P 4, Q 7) -> 84 MHz SYSCLK,
  * APB2 84 MHz so SPI1 runs at 42 MHz (BR = /2), APB1 42 MHz, flash 2 wait
  * states. SysTick 1 kHz for the panel's delays.
- *
- * Built by make (build/fw/stm32f411-st7789.elf) with the cross compiler; it
- * was not run on hardware here (no board): flash it with e.g. st-flash or
- * OpenOCD after arm-none-eabi-objcopy -O binary.
  */
+#include "board_f411.h"
+
 #include "spi_dma_port.h"
 #include "stm32f411.h"
-
-#include "bench_scenes.h"
-#include "zspan/panel.h"
-
 #define PIN_BL 1u
 #define PIN_RST 2u
 #define PIN_DC 3u
@@ -141,37 +134,9 @@ static void spi_init(void)
     NVIC_ISER(DMA2_STREAM3_IRQN / 32u) = 1u << (DMA2_STREAM3_IRQN % 32u);
 }
 
-#define ARENA_FOR(...) ZS_ARENA_BYTES(BENCH_W, BENCH_H, __VA_ARGS__)
-#include "bench_caps.h"
-static uint8_t arena[ARENA_FOR(BENCH_CAPS_SPHERE285)];
-static uint8_t line0[BENCH_W * 2], line1[BENCH_W * 2];
-
-int main(void)
+zs_bus *port_f411_bus(void)
 {
-    static zs_renderer r;
-    static zs_panel lcd;
-    zs_camera cam;
-    zs_config cfg;
-    const bench_scene *s = &bench_scenes[0];
-    int frame = 0;
-
     clock_init();
     spi_init();
-    if (spi_dma_port_init(&port, &f411_hw, &bus) != ZS_BUS_OK)
-        return 1;
-    if (zs_panel_init(&lcd, &zs_panel_st7789_240x240, &bus, ZS_FMT_RGB565_BE, 0) !=
-        ZS_PANEL_OK)
-        return 1;
-    zs_panel_backlight(&lcd, 255);
-    cfg = bench_config(s);
-    if (zs_init(&r, arena, sizeof arena, &cfg) != ZS_OK || bench_camera(&cam) != ZS_OK)
-        return 1;
-    for (;;) {
-        if (bench_submit(&r, &cam, s, frame, ZS_MODE_SPAN) != ZS_OK)
-            return 1;
-        if (zs_panel_stream(&lcd, &r, line0, line1, sizeof line0, 1, NULL, NULL) !=
-            ZS_PANEL_OK)
-            return 1;
-        frame = (frame + 1) % 180; /* 2 degrees per frame */
-    }
+    return spi_dma_port_init(&port, &f411_hw, &bus) == ZS_BUS_OK ? &bus : NULL;
 }

@@ -109,7 +109,7 @@ $(FUZZ_DIR)/fuzz_meshc: tests/fuzz/fuzz_meshc.c tests/fuzz/fuzz_util.h tools/zsp
 $(FUZZ_DIR)/mcp2210/%.o: %.c | deps
 	@mkdir -p $(@D)
 	$(FUZZ_CC) -std=c99 -D_POSIX_C_SOURCE=200809L -g -O1 -Iinclude -Iports/mcp2210 $(FUZZ_SAN) \
-	    -fsanitize=fuzzer-no-link -c $< -o $@
+	    -fsanitize=fuzzer-no-link -MMD -MP -c $< -o $@
 $(FUZZ_DIR)/fuzz_mcp2210: tests/fuzz/fuzz_mcp2210.c tests/fuzz/fuzz_util.h \
                           $(FUZZ_DIR)/mcp2210/ports/mcp2210/mcp2210.o \
                           $(FUZZ_DIR)/mcp2210/drivers/bus.o | deps

@@ -35,13 +35,12 @@ static zs_panel_status dcs_orient(zs_panel *p)
 
 static zs_panel_status dcs_invert(zs_panel *p)
 {
-    int on = (p->desc->invert != 0) != (p->inverted != 0);
-    return zs__panel_cmd(p, on ? ZS_DCS_INVON : ZS_DCS_INVOFF, NULL, 0);
+    return zs__panel_cmd_if(p, zs__panel_invert_wanted(p), ZS_DCS_INVON, ZS_DCS_INVOFF);
 }
 
 static zs_panel_status dcs_display(zs_panel *p, int on)
 {
-    return zs__panel_cmd(p, on ? ZS_DCS_DISPON : ZS_DCS_DISPOFF, NULL, 0);
+    return zs__panel_cmd_if(p, on, ZS_DCS_DISPON, ZS_DCS_DISPOFF);
 }
 
 static zs_panel_status dcs_init(zs_panel *p)

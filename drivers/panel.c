@@ -36,6 +36,16 @@ zs_panel_status zs__panel_from_bus(zs_bus_status s)
     return s == ZS_BUS_ERR_TIMEOUT ? ZS_PANEL_ERR_TIMEOUT : ZS_PANEL_ERR_IO;
 }
 
+zs_panel_status zs__panel_cmd_if(zs_panel *p, int on, uint8_t yes, uint8_t no)
+{
+    return zs__panel_cmd(p, on ? yes : no, NULL, 0);
+}
+
+int zs__panel_invert_wanted(const zs_panel *p)
+{
+    return (p->desc->invert != 0) != (p->inverted != 0);
+}
+
 zs_panel_status zs__panel_cmd(zs_panel *p, uint8_t cmd, const uint8_t *params, size_t n)
 {
     return zs__panel_from_bus(zs_bus_cmd(p->bus, cmd, params, n));

@@ -40,13 +40,12 @@ static zs_panel_status ssd1351_orient(zs_panel *p)
 
 static zs_panel_status ssd1351_invert(zs_panel *p)
 {
-    int on = (p->desc->invert != 0) != (p->inverted != 0);
-    return zs__panel_cmd(p, on ? ZS_SSD1351_INVERSE : ZS_SSD1351_NORMAL, NULL, 0);
+    return zs__panel_cmd_if(p, zs__panel_invert_wanted(p), ZS_SSD1351_INVERSE, ZS_SSD1351_NORMAL);
 }
 
 static zs_panel_status ssd1351_display(zs_panel *p, int on)
 {
-    return zs__panel_cmd(p, on ? ZS_SSD1351_SLEEP_OFF : ZS_SSD1351_SLEEP_ON, NULL, 0);
+    return zs__panel_cmd_if(p, on, ZS_SSD1351_SLEEP_OFF, ZS_SSD1351_SLEEP_ON);
 }
 
 static zs_panel_status ssd1351_init(zs_panel *p)

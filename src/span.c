@@ -74,40 +74,44 @@ static int always_nearer(const zs_active *a, const zs_active *b)
     return a->zhi <= b->zlo;
 }
 
+/* The top by depth ranges alone, or NULL: the member whose range ends first
+ * wins outright if it ends before every other range starts (typical where
+ * surfaces are apart in depth); then no plane is evaluated and nothing can
+ * overtake it. */
+static zs_active *range_top(const row_ctx *c)
+{
+    int ns = c->r->priv.n_set, k;
+    zs_active *near = 0;
+    const zs_active *lo1_of = 0;
+    uint16_t lo1 = 0xFFFFu, lo2 = 0xFFFFu; /* the two smallest zlo */
+    for (k = 0; k < ns; k++) {
+        zs_active *a = &c->act[c->set[k]];
+        if (!near || a->zhi < near->zhi)
+            near = a;
+        if (a->zlo < lo1) {
+            lo2 = lo1;
+            lo1 = a->zlo;
+            lo1_of = a;
+        } else if (a->zlo < lo2) {
+            lo2 = a->zlo;
+        }
+    }
+    return near && near->zhi <= (near == lo1_of ? lo2 : lo1) ? near : 0;
+}
+
 /* Picks the top among the whole set at column x and the next crossing. */
 static void retop(row_ctx *c, int32_t x)
 {
     int ns = c->r->priv.n_set, k;
-    zs_active *best = 0;
+    zs_active *best = range_top(c);
     int64_t bz = 0;
-    /* First by depth ranges alone: the member whose range ends first wins
-     * outright if it ends before every other range starts (typical where
-     * surfaces are apart in depth); then no plane is evaluated and nothing
-     * can overtake it. */
-    {
-        zs_active *near = 0;
-        const zs_active *lo1_of = 0;
-        uint16_t lo1 = 0xFFFFu, lo2 = 0xFFFFu; /* the two smallest zlo */
-        for (k = 0; k < ns; k++) {
-            zs_active *a = &c->act[c->set[k]];
-            if (!near || a->zhi < near->zhi)
-                near = a;
-            if (a->zlo < lo1) {
-                lo2 = lo1;
-                lo1 = a->zlo;
-                lo1_of = a;
-            } else if (a->zlo < lo2) {
-                lo2 = a->zlo;
-            }
-        }
-        if (near && near->zhi <= (near == lo1_of ? lo2 : lo1)) {
-            c->top = near;
-            c->dirty = 0;
-            c->min_cross = NO_CROSS;
-            for (k = 0; k < ns; k++)
-                c->act[c->set[k]].cross = NO_CROSS;
-            return;
-        }
+    if (best) { /* nearer than every other member wherever they meet */
+        c->top = best;
+        c->dirty = 0;
+        c->min_cross = NO_CROSS;
+        for (k = 0; k < ns; k++)
+            c->act[c->set[k]].cross = NO_CROSS;
+        return;
     }
     for (k = 0; k < ns; k++) {
         zs_active *a = &c->act[c->set[k]];

@@ -19,21 +19,10 @@
 
 #define NO_CROSS INT32_MAX
 
-typedef struct row_ctx {
-    zs_renderer *r;
-    zs_active *act;
-    const zs_edge *edges;
-    uint16_t *set;
-    uint8_t *row;
-    zs_active *top;       /* nearest member, or NULL when the set is empty */
-    const zs_active *pend_top; /* span started at pend_x0, not yet written */
-    int32_t pend_x0;
-    int dirty;            /* the top left: pick again before the next span */
-    int32_t width;
-    int32_t min_cross;    /* first column where a member overtakes the top */
-    uint32_t background;  /* packed background pixel */
-    uint32_t evals;
-} row_ctx;
+/* The walk's hot state lives in locals of zs_span_row (registers: with
+ * -fno-strict-aliasing, state behind a pointer would be reloaded after every
+ * store to a record). The out-of-line helpers below get what they need as
+ * arguments and pass the nearest crossing back through r->priv.min_cross. */
 
 static int64_t depth_at(const zs_active *a, int32_t x)
 {
@@ -46,18 +35,34 @@ static int nearer(int64_t za, const zs_active *a, int64_t zb, const zs_active *b
     return za < zb || (za == zb && a->tri < b->tri);
 }
 
+/* Is a nearer than b at every centre both cover? (Their depth ranges say
+ * so without evaluating either plane.) */
+static int always_nearer(const zs_active *a, const zs_active *b)
+{
+    return a->zhi <= b->zlo;
+}
+
+/* Clamped column where a ends on this row (its right edge). */
+static int32_t right_column(const zs_renderer *r, const zs_active *a)
+{
+    return zs_clampi(r->priv.edges[a->right].x, 0, (int32_t)r->cfg.width);
+}
+
 /* First column after x where j overtakes top, or NO_CROSS when that does not
  * happen before one of the two triangles ends on this row. zj, zt: depths
  * at x, where top wins. */
-static int32_t overtake(const zs_active *j, const zs_active *top, int32_t x,
-                        int64_t zj, int64_t zt)
+static int32_t overtake(const zs_renderer *r, const zs_active *j, const zs_active *top,
+                        int32_t x, int64_t zj, int64_t zt)
 {
     int64_t slope = top->zdx - j->zdx, gap = zj - zt, reach, k;
-    int32_t lim;
+    int32_t lim, lj;
     int j_wins_tie = j->tri < top->tri;
     if (slope <= 0)
         return NO_CROSS; /* j never gets nearer along this row */
-    lim = top->xr < j->xr ? top->xr : j->xr;
+    lim = right_column(r, top);
+    lj = right_column(r, j);
+    if (lj < lim)
+        lim = lj;
     if (lim - x <= 1)
         return NO_CROSS;
     reach = slope * (lim - x - 1); /* how much the gap closes by the last shared column */
@@ -67,25 +72,18 @@ static int32_t overtake(const zs_active *j, const zs_active *top, int32_t x,
     return x + (int32_t)k;
 }
 
-/* Is a nearer than b at every centre both cover? (Their depth ranges say
- * so without evaluating either plane.) */
-static int always_nearer(const zs_active *a, const zs_active *b)
-{
-    return a->zhi <= b->zlo;
-}
-
 /* The top by depth ranges alone, or NULL: the member whose range ends first
  * wins outright if it ends before every other range starts (typical where
  * surfaces are apart in depth); then no plane is evaluated and nothing can
  * overtake it. */
-static zs_active *range_top(const row_ctx *c)
+static zs_active *range_top(zs_active *act, const uint16_t *set, int ns)
 {
-    int ns = c->r->priv.n_set, k;
     zs_active *near = 0;
     const zs_active *lo1_of = 0;
     uint16_t lo1 = 0xFFFFu, lo2 = 0xFFFFu; /* the two smallest zlo */
+    int k;
     for (k = 0; k < ns; k++) {
-        zs_active *a = &c->act[c->set[k]];
+        zs_active *a = &act[set[k]];
         if (!near || a->zhi < near->zhi)
             near = a;
         if (a->zlo < lo1) {
@@ -99,182 +97,183 @@ static zs_active *range_top(const row_ctx *c)
     return near && near->zhi <= (near == lo1_of ? lo2 : lo1) ? near : 0;
 }
 
-/* Picks the top among the whole set at column x and the next crossing. */
-static void retop(row_ctx *c, int32_t x)
+/* Picks the top among the ns members at column x; sets each member's
+ * crossing with it and the nearest of them in r->priv.min_cross. */
+static ZS_NOINLINE zs_active *retop(zs_renderer *r, int ns, int32_t x)
 {
-    int ns = c->r->priv.n_set, k;
-    zs_active *best = range_top(c);
+    zs_active *act = r->priv.active;
+    const uint16_t *set = r->priv.in_set;
+    zs_active *best = range_top(act, set, ns);
+    int32_t min_cross = NO_CROSS;
     int64_t bz = 0;
+    int k;
     if (best) { /* nearer than every other member wherever they meet */
-        c->top = best;
-        c->dirty = 0;
-        c->min_cross = NO_CROSS;
         for (k = 0; k < ns; k++)
-            c->act[c->set[k]].cross = NO_CROSS;
-        return;
+            act[set[k]].cross = NO_CROSS;
+        r->priv.min_cross = NO_CROSS;
+        return best;
     }
     for (k = 0; k < ns; k++) {
-        zs_active *a = &c->act[c->set[k]];
+        zs_active *a = &act[set[k]];
         a->zcur = depth_at(a, x);
         if (!best || nearer(a->zcur, a, bz, best)) {
             best = a;
             bz = a->zcur;
         }
     }
-    c->evals += (uint32_t)ns;
-    c->top = best;
-    c->dirty = 0;
-    c->min_cross = NO_CROSS;
+    r->stats.depth_evals += (uint32_t)ns;
     for (k = 0; k < ns; k++) {
-        zs_active *a = &c->act[c->set[k]];
+        zs_active *a = &act[set[k]];
         if (a == best)
             continue;
-        a->cross = always_nearer(best, a) ? NO_CROSS : overtake(a, best, x, a->zcur, bz);
-        if (a->cross < c->min_cross)
-            c->min_cross = a->cross;
+        a->cross = always_nearer(best, a) ? NO_CROSS : overtake(r, a, best, x, a->zcur, bz);
+        if (a->cross < min_cross)
+            min_cross = a->cross;
     }
+    r->priv.min_cross = min_cross;
+    return best;
 }
 
-/* Writes the pending span: [pend_x0, x) of pend_top. */
-static void flush(row_ctx *c, int32_t x)
+/* Writes [x0, x1) of a (NULL: the background). */
+static ZS_NOINLINE void put_span(const zs_renderer *r, uint8_t *row, const zs_active *a,
+                                 int32_t x0, int32_t x1)
 {
-    const zs_active *a = c->pend_top;
-    int32_t x0 = c->pend_x0;
-    if (x <= x0)
-        return;
     if (!a)
-        zs_fill_flat(c->row, x0, x, c->r->priv.bpp, c->background);
+        zs_fill_flat(row, x0, x1, r->priv.bpp, r->priv.background);
     else if (a->flags & ZS_ACT_GOURAUD)
-        zs_fill_gouraud(c->r, &c->r->priv.acolor[a - c->act], c->row, x0,
-                        x);
+        zs_fill_gouraud(r, &r->priv.acolor[a - r->priv.active], row, x0, x1);
     else
-        zs_fill_flat(c->row, x0, x, c->r->priv.bpp, a->pixel);
-    c->r->stats.spans++;
+        zs_fill_flat(row, x0, x1, r->priv.bpp, a->pixel);
 }
 
-/* The top from x0 on. Spans of one surface split only by events behind it
- * (hidden triangles entering or leaving) are written as one. */
-static void fill(row_ctx *c, int32_t x0)
+/* A member other than the top left: the nearest crossing of the rest. */
+static ZS_NOINLINE int32_t next_cross(const zs_renderer *r, int ns, const zs_active *top)
 {
-    if (c->top == c->pend_top)
-        return;
-    flush(c, x0);
-    c->pend_top = c->top;
-    c->pend_x0 = x0;
+    const zs_active *act = r->priv.active;
+    const uint16_t *set = r->priv.in_set;
+    int32_t m = NO_CROSS;
+    int k;
+    for (k = 0; k < ns; k++) {
+        const zs_active *a = &act[set[k]];
+        if (a != top && a->cross < m)
+            m = a->cross;
+    }
+    return m;
 }
 
-/* Columns [x0, x1) with the set unchanged: split where the top is overtaken. */
-static void emit(row_ctx *c, int32_t x0, int32_t x1)
+/* An entering triangle a at column x against the top (both in the set):
+ * its crossing with the top, or 1 when it may be the new top (pick again). */
+static ZS_NOINLINE int enter_vs_top(zs_renderer *r, zs_active *a, zs_active *top, int32_t x)
 {
-    if (c->dirty)
-        retop(c, x0);
-    fill(c, x0);
-    while (c->top && c->min_cross < x1) {
-        int32_t xc = c->min_cross;
-        c->r->stats.crossings++;
-        retop(c, xc);
-        fill(c, xc);
-    }
-}
-
-static void enter(row_ctx *c, zs_active *a, uint16_t ai, int32_t x)
-{
-    int64_t za, zt;
-    a->set_pos = c->r->priv.n_set;
-    c->set[c->r->priv.n_set++] = ai;
-    a->cross = NO_CROSS;
-    a->xr = (int16_t)zs_clampi(c->edges[a->right].x, 0, c->width);
-    if (c->dirty)
-        return; /* the pick after this column's events includes it */
-    if (!c->top) {
-        c->top = a;
-        c->min_cross = NO_CROSS;
-        return;
-    }
-    if (always_nearer(c->top, a))
-        return; /* behind the top wherever both are: no crossing either */
-    if (always_nearer(a, c->top)) {
-        retop(c, x); /* the new top; every member's crossing changes */
-        return;
-    }
-    za = depth_at(a, x);
-    zt = depth_at(c->top, x);
-    c->evals += 2;
-    if (nearer(za, a, zt, c->top)) {
-        retop(c, x); /* a is the new top; every member's crossing changes */
-        return;
-    }
-    a->cross = overtake(a, c->top, x, za, zt);
-    if (a->cross < c->min_cross)
-        c->min_cross = a->cross;
-}
-
-static void leave(row_ctx *c, zs_active *a, int32_t x)
-{
-    uint16_t last = c->set[--c->r->priv.n_set];
-    c->set[a->set_pos] = last;
-    c->act[last].set_pos = a->set_pos;
-    (void)x;
-    if (a == c->top) {
-        c->top = 0;
-        c->min_cross = NO_CROSS;
-        c->dirty = c->r->priv.n_set > 0;
-    } else if (c->dirty) {
-        return;
-    } else if (a->cross == c->min_cross && a->cross != NO_CROSS) {
-        int k;
-        c->min_cross = NO_CROSS;
-        for (k = 0; k < c->r->priv.n_set; k++) {
-            const zs_active *m = &c->act[c->set[k]];
-            if (m != c->top && m->cross < c->min_cross)
-                c->min_cross = m->cross;
-        }
-    }
+    int64_t za = depth_at(a, x), zt = depth_at(top, x);
+    r->stats.depth_evals += 2;
+    if (nearer(za, a, zt, top))
+        return 1;
+    a->cross = overtake(r, a, top, x, za, zt);
+    return 0;
 }
 
 void zs_span_row(zs_renderer *r, int y, uint8_t *row)
 {
-    const uint16_t *ael = r->priv.ael;
-    row_ctx c;
-    int32_t cur = 0;
-    int i, n = r->priv.n_ael;
+    zs_active *const act = r->priv.active;
+    const zs_edge *const edges = r->priv.edges;
+    const uint16_t *const ael = r->priv.ael;
+    uint16_t *const set = r->priv.in_set;
+    const int32_t width = (int32_t)r->cfg.width;
+    const int n = r->priv.n_ael;
+    zs_active *top = 0;            /* nearest member, or NULL when the set is empty */
+    const zs_active *pend_top = 0; /* span started at pend_x0, not yet written */
+    int32_t pend_x0 = 0, cur = 0;
+    int32_t min_cross = NO_CROSS;  /* first column where a member overtakes the top */
+    int ns = 0, dirty = 0;         /* set size; the top must be picked again */
+    uint32_t spans = 0;
+    int i;
     (void)y;
-    c.r = r;
-    c.act = r->priv.active;
-    c.edges = r->priv.edges;
-    c.set = r->priv.in_set;
-    c.row = row;
-    c.top = 0;
-    c.pend_top = 0;
-    c.pend_x0 = 0;
-    c.dirty = 0;
-    c.width = r->cfg.width;
-    c.min_cross = NO_CROSS;
-    c.evals = 0;
-    c.background = r->priv.background;
-    r->priv.n_set = 0;
-    for (i = 0; i < n; i++) {
-        const zs_edge *e = &c.edges[ael[i]];
-        int32_t x = zs_clampi(e->x, 0, c.width);
-        if (x > cur) { /* all events at a column are applied before its span */
-            emit(&c, cur, x);
+    for (i = 0;; i++) {
+        const zs_edge *e;
+        int32_t x;
+        uint16_t t;
+        if (i < n) {
+            e = &edges[ael[i]];
+            x = e->x;
+        } else {
+            e = 0;
+            x = width;
+        }
+        /* all events at a column are applied before its span; an edge left
+         * of the screen acts at column 0, one right of it at the width */
+        if (x > cur) {
+            if (x > width)
+                x = width;
+            if (dirty) {
+                top = retop(r, ns, cur);
+                min_cross = r->priv.min_cross;
+                dirty = 0;
+            }
+            for (;;) {
+                if (top != pend_top) { /* spans of one surface merge */
+                    if (cur > pend_x0) {
+                        put_span(r, row, pend_top, pend_x0, cur);
+                        spans++;
+                    }
+                    pend_top = top;
+                    pend_x0 = cur;
+                }
+                if (!top || min_cross >= x)
+                    break;
+                cur = min_cross; /* a member overtakes the top: split */
+                r->stats.crossings++;
+                top = retop(r, ns, cur);
+                min_cross = r->priv.min_cross;
+            }
             cur = x;
         }
+        if (!e)
+            break;
         /* in/out counters: a span inverted by rounding is never entered */
-        if (e->trail != ZS_NONE) {
-            zs_active *a = &c.act[e->trail];
-            if (a->inside-- == 1)
-                leave(&c, a, x);
+        t = e->trail;
+        if (t != ZS_NONE) {
+            zs_active *a = &act[t];
+            if (a->inside-- == 1) { /* leaves the set */
+                uint16_t last = set[--ns];
+                uint16_t pos = a->set_pos;
+                set[pos] = last;
+                act[last].set_pos = pos;
+                if (a == top) {
+                    top = 0;
+                    min_cross = NO_CROSS;
+                    dirty = ns > 0;
+                } else if (!dirty && a->cross == min_cross && min_cross != NO_CROSS) {
+                    min_cross = next_cross(r, ns, top);
+                }
+            }
         }
-        if (e->lead != ZS_NONE) {
-            zs_active *a = &c.act[e->lead];
-            if (++a->inside == 1)
-                enter(&c, a, e->lead, x);
+        t = e->lead;
+        if (t != ZS_NONE) {
+            zs_active *a = &act[t];
+            if (++a->inside == 1) { /* enters the set */
+                a->set_pos = (uint16_t)ns;
+                set[ns++] = t;
+                a->cross = NO_CROSS;
+                if (dirty)
+                    continue; /* the pick after this column's events includes it */
+                if (!top) {
+                    top = a;
+                    min_cross = NO_CROSS;
+                } else if (always_nearer(top, a)) {
+                    /* behind the top wherever both are: no crossing either */
+                } else if (always_nearer(a, top) || enter_vs_top(r, a, top, cur)) {
+                    dirty = 1; /* a new top: every member's crossing changes */
+                } else if (a->cross < min_cross) {
+                    min_cross = a->cross;
+                }
+            }
         }
     }
-    if (cur < c.width)
-        emit(&c, cur, c.width);
-    flush(&c, c.width);
-    r->stats.depth_evals += c.evals;
-    r->stats.pixels_shaded += (uint32_t)c.width;
+    if (width > pend_x0) {
+        put_span(r, row, pend_top, pend_x0, width);
+        spans++;
+    }
+    r->stats.spans += spans;
+    r->stats.pixels_shaded += (uint32_t)width;
 }

@@ -107,6 +107,7 @@ static void depth_plane(zs_active *a, const zs_vert *s[3], const zs_recip *area2
                       a->zdy * (16 * (int64_t)oy + 8 - s[0]->y),
                   4);
     a->zrow = z0 + a->zdy * ((int64_t)y - oy) - a->zdx * ox;
+    a->y0 = (int16_t)y;
 }
 
 /* The depth range the span walk decides by without evaluating planes. At a
@@ -171,7 +172,8 @@ void zs_anchor_depth(const zs_renderer *r, zs_active *a, int32_t xa, int32_t y)
     if (l0 >= 0 && l1 >= 0 && l2 >= 0)
         z += zs_muldiv64(((int64_t)s[1]->z - s[0]->z) * 1024, l1, d, 1) +
              zs_muldiv64(((int64_t)s[2]->z - s[0]->z) * 1024, l2, d, 1);
-    a->zrow = z - a->zdx * xa;
+    /* stored for row y0: row y's constant comes back exactly */
+    a->zrow = z - a->zdx * xa - a->zdy * (int64_t)(y - a->y0);
 }
 
 /* Takes an edge from the pool for a -> b, owned by ai on one side, and

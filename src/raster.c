@@ -180,20 +180,6 @@ static void add_new_edges(zs_renderer *r, int32_t y)
     r->priv.n_sorted = (uint16_t)n;
 }
 
-/* Planes of active triangle ai to the next row (a steep plane is set again
- * by anchor_steep or zs_continue_edge). */
-static inline void step_planes(zs_renderer *r, uint16_t ai)
-{
-    zs_active *a = &r->priv.active[ai];
-    a->zrow += a->zdy;
-    if (a->flags & ZS_ACT_GOURAUD) {
-        zs_active_color *c = &r->priv.acolor[ai];
-        c->crow[0] += (uint32_t)c->cdy[0];
-        c->crow[1] += (uint32_t)c->cdy[1];
-        c->crow[2] += (uint32_t)c->cdy[2];
-    }
-}
-
 /* Row `next` of the steep planes: each anchored at its left edge's column.
  * A pass of its own, run only in frames with needles, so the edge stepping
  * loop stays as lean as without them. */
@@ -218,20 +204,18 @@ static void retire_edge(zs_renderer *r, zs_edge *e, int32_t next, uint16_t *cont
     uint16_t *afree = r->priv.active_free;
     if (e->lead != ZS_NONE) {
         zs_active *a = &act[e->lead];
-        if (next >= a->y_end) {
+        if (next >= a->y_end)
             afree[r->priv.n_active_free++] = e->lead;
-        } else {
-            step_planes(r, e->lead);
+        else
             cont[(*n_cont)++] = e->lead;
-        }
     }
     if (e->trail != ZS_NONE && next < act[e->trail].y_end)
         cont[(*n_cont)++] = e->trail;
 }
 
 /* Steps every edge to row y + 1, retires finished ones and keeps the list
- * sorted (an edge that passed its left neighbour is moved back: rare). The
- * planes of each triangle step with its left edge. */
+ * sorted (an edge that passed its left neighbour is moved back: rare).
+ * Planes are not stepped: each is evaluated for the row it is needed on. */
 static void step_edges(zs_renderer *r, int32_t y)
 {
     uint16_t *ael = r->priv.ael;
@@ -256,8 +240,6 @@ static void step_edges(zs_renderer *r, int32_t y)
             e->err += e->den;
             e->x++;
         }
-        if (e->lead != ZS_NONE)
-            step_planes(r, e->lead);
         if (e->x >= prev_x) {
             prev_x = e->x;
             ael[kept++] = ei;

@@ -125,11 +125,13 @@ static uint32_t channel(uint32_t acc)
         cb += db;                                                                         \
     }
 
-void zs_fill_gouraud(const zs_renderer *r, const zs_active_color *a, uint8_t *row, int x0, int x1)
+void zs_fill_gouraud(const zs_renderer *r, const zs_active_color *a, int32_t dy, uint8_t *row,
+                     int x0, int x1)
 {
-    uint32_t cr = a->crow[0] + (uint32_t)a->cdx[0] * (uint32_t)x0;
-    uint32_t cg = a->crow[1] + (uint32_t)a->cdx[1] * (uint32_t)x0;
-    uint32_t cb = a->crow[2] + (uint32_t)a->cdx[2] * (uint32_t)x0;
+    /* wrapping products equal the sums of steps they replace */
+    uint32_t cr = a->crow[0] + (uint32_t)a->cdy[0] * (uint32_t)dy + (uint32_t)a->cdx[0] * (uint32_t)x0;
+    uint32_t cg = a->crow[1] + (uint32_t)a->cdy[1] * (uint32_t)dy + (uint32_t)a->cdx[1] * (uint32_t)x0;
+    uint32_t cb = a->crow[2] + (uint32_t)a->cdy[2] * (uint32_t)dy + (uint32_t)a->cdx[2] * (uint32_t)x0;
     uint32_t dr = (uint32_t)a->cdx[0], dg = (uint32_t)a->cdx[1], db = (uint32_t)a->cdx[2];
     uint8_t *p = row + (size_t)x0 * r->priv.bpp;
     int x;

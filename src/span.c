@@ -24,9 +24,9 @@
  * store to a record). The out-of-line helpers below get what they need as
  * arguments and pass the nearest crossing back through r->priv.min_cross. */
 
-static int64_t depth_at(const zs_active *a, int32_t x)
+static int64_t depth_at(const zs_active *a, int32_t x, int32_t y)
 {
-    return a->zrow + a->zdx * x;
+    return zs_row_depth(a, y) + a->zdx * x;
 }
 
 /* Does (za, a) win over (zb, b)? Nearer first, then the earlier record. */
@@ -99,7 +99,7 @@ static zs_active *range_top(zs_active *act, const uint16_t *set, int ns)
 
 /* Picks the top among the ns members at column x; sets each member's
  * crossing with it and the nearest of them in r->priv.min_cross. */
-static ZS_NOINLINE zs_active *retop(zs_renderer *r, int ns, int32_t x)
+static ZS_NOINLINE zs_active *retop(zs_renderer *r, int ns, int32_t x, int32_t y)
 {
     zs_active *act = r->priv.active;
     const uint16_t *set = r->priv.in_set;
@@ -115,7 +115,7 @@ static ZS_NOINLINE zs_active *retop(zs_renderer *r, int ns, int32_t x)
     }
     for (k = 0; k < ns; k++) {
         zs_active *a = &act[set[k]];
-        a->zcur = depth_at(a, x);
+        a->zcur = depth_at(a, x, y);
         if (!best || nearer(a->zcur, a, bz, best)) {
             best = a;
             bz = a->zcur;
@@ -135,13 +135,13 @@ static ZS_NOINLINE zs_active *retop(zs_renderer *r, int ns, int32_t x)
 }
 
 /* Writes [x0, x1) of a (NULL: the background). */
-static ZS_NOINLINE void put_span(const zs_renderer *r, uint8_t *row, const zs_active *a,
-                                 int32_t x0, int32_t x1)
+static ZS_NOINLINE void put_span(const zs_renderer *r, int32_t y, uint8_t *row,
+                                 const zs_active *a, int32_t x0, int32_t x1)
 {
     if (!a)
         zs_fill_flat(row, x0, x1, r->priv.bpp, r->priv.background);
     else if (a->flags & ZS_ACT_GOURAUD)
-        zs_fill_gouraud(r, &r->priv.acolor[a - r->priv.active], row, x0, x1);
+        zs_fill_gouraud(r, &r->priv.acolor[a - r->priv.active], y - a->y0, row, x0, x1);
     else
         zs_fill_flat(row, x0, x1, r->priv.bpp, a->pixel);
 }
@@ -163,9 +163,10 @@ static ZS_NOINLINE int32_t next_cross(const zs_renderer *r, int ns, const zs_act
 
 /* An entering triangle a at column x against the top (both in the set):
  * its crossing with the top, or 1 when it may be the new top (pick again). */
-static ZS_NOINLINE int enter_vs_top(zs_renderer *r, zs_active *a, zs_active *top, int32_t x)
+static ZS_NOINLINE int enter_vs_top(zs_renderer *r, zs_active *a, zs_active *top, int32_t x,
+                                    int32_t y)
 {
-    int64_t za = depth_at(a, x), zt = depth_at(top, x);
+    int64_t za = depth_at(a, x, y), zt = depth_at(top, x, y);
     r->stats.depth_evals += 2;
     if (nearer(za, a, zt, top))
         return 1;
@@ -188,7 +189,6 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
     int ns = 0, dirty = 0;         /* set size; the top must be picked again */
     uint32_t spans = 0;
     int i;
-    (void)y;
     for (i = 0;; i++) {
         const zs_edge *e;
         int32_t x;
@@ -206,14 +206,14 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
             if (x > width)
                 x = width;
             if (dirty) {
-                top = retop(r, ns, cur);
+                top = retop(r, ns, cur, y);
                 min_cross = r->priv.min_cross;
                 dirty = 0;
             }
             for (;;) {
                 if (top != pend_top) { /* spans of one surface merge */
                     if (cur > pend_x0) {
-                        put_span(r, row, pend_top, pend_x0, cur);
+                        put_span(r, y, row, pend_top, pend_x0, cur);
                         spans++;
                     }
                     pend_top = top;
@@ -223,7 +223,7 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
                     break;
                 cur = min_cross; /* a member overtakes the top: split */
                 r->stats.crossings++;
-                top = retop(r, ns, cur);
+                top = retop(r, ns, cur, y);
                 min_cross = r->priv.min_cross;
             }
             cur = x;
@@ -262,7 +262,7 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
                     min_cross = NO_CROSS;
                 } else if (always_nearer(top, a)) {
                     /* behind the top wherever both are: no crossing either */
-                } else if (always_nearer(a, top) || enter_vs_top(r, a, top, cur)) {
+                } else if (always_nearer(a, top) || enter_vs_top(r, a, top, cur, y)) {
                     dirty = 1; /* a new top: every member's crossing changes */
                 } else if (a->cross < min_cross) {
                     min_cross = a->cross;
@@ -271,7 +271,7 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
         }
     }
     if (width > pend_x0) {
-        put_span(r, row, pend_top, pend_x0, width);
+        put_span(r, y, row, pend_top, pend_x0, width);
         spans++;
     }
     r->stats.spans += spans;

@@ -7,8 +7,8 @@
 /* Writes the row from the owners of columns [x0, x1) (background outside):
  * one fill per run of equal owner, so every pixel is written once however
  * much the triangles overlap. */
-static void write_runs(zs_renderer *r, const uint16_t *owner, uint8_t *row, int32_t x0,
-                       int32_t x1)
+static void write_runs(zs_renderer *r, int32_t y, const uint16_t *owner, uint8_t *row,
+                       int32_t x0, int32_t x1)
 {
     const zs_active *act = r->priv.active;
     int32_t w = r->cfg.width, x = x0;
@@ -26,7 +26,7 @@ static void write_runs(zs_renderer *r, const uint16_t *owner, uint8_t *row, int3
         if (o == ZS_NONE)
             zs_fill_flat(row, xs, x, bpp, background);
         else if (act[o].flags & ZS_ACT_GOURAUD)
-            zs_fill_gouraud(r, &r->priv.acolor[o], row, xs, x);
+            zs_fill_gouraud(r, &r->priv.acolor[o], y - act[o].y0, row, xs, x);
         else
             zs_fill_flat(row, xs, x, bpp, act[o].pixel);
         r->stats.spans++;
@@ -57,7 +57,6 @@ void zs_zline_row(zs_renderer *r, int y, uint8_t *row)
     int32_t w = r->cfg.width, x, x0 = w, x1 = w; /* [x0, x1): columns drawn */
     uint32_t evals = 0;
     int i;
-    (void)y;
     for (i = 0; i < r->priv.n_ael; i++) {
         const zs_edge *e = &edges[ael[i]];
         uint16_t ai = e->lead;
@@ -89,7 +88,7 @@ void zs_zline_row(zs_renderer *r, int y, uint8_t *row)
         /* locals: the depth stores could otherwise alias the record */
         dz = act[ai].zdx;
         tri = act[ai].tri;
-        z = act[ai].zrow + dz * xl;
+        z = zs_row_depth(&act[ai], y) + dz * xl;
         for (x = xl; x < xr; x++, z += dz) {
             /* nearer wins; at equal depth the earlier record (exact ties) */
             if (z < depth[x] || (z == depth[x] && tri < act[owner[x]].tri)) {
@@ -99,5 +98,5 @@ void zs_zline_row(zs_renderer *r, int y, uint8_t *row)
         }
     }
     r->stats.depth_evals += evals;
-    write_runs(r, owner, row, x0, x1);
+    write_runs(r, y, owner, row, x0, x1);
 }

@@ -55,13 +55,14 @@ typedef struct zs_edge {
 /* An active triangle: its depth plane and span-walk state, valid while it
  * crosses the current row. */
 typedef struct zs_active {
-    int64_t zrow;          /* depth at column 0 of the current row (Q40) */
+    int64_t zrow;          /* depth at column 0 of row y0 (Q40); row y adds
+                              zdy * (y - y0), exactly (planes are not stepped) */
     int64_t zdx, zdy;      /* depth per column and per row (Q40) */
     int64_t zcur;          /* scratch: depth at the current span start */
     uint32_t pixel;        /* packed pixel of a flat triangle */
     uint16_t tri;          /* record index: the submission order for ties */
     uint16_t right;        /* its right (trailing) edge */
-    int16_t xr;            /* span walk: clamped right column on this row */
+    int16_t y0;            /* the row zrow and the colour planes refer to */
     uint8_t flags;         /* ZS_ACT_* */
     int8_t inside;         /* in/out counter while walking a row */
     uint16_t set_pos;      /* position in the in-polygon set */
@@ -75,7 +76,7 @@ typedef struct zs_active {
 
 /* Colour planes of an active triangle (same index), for Gouraud shading. */
 typedef struct zs_active_color {
-    uint32_t crow[3];      /* colour at column 0 of this row (Q8.16, wrapping) */
+    uint32_t crow[3];      /* colour at column 0 of row y0 (Q8.16, wrapping) */
     int32_t cdx[3], cdy[3];/* colour per column and per row (Q8.16) */
 } zs_active_color;
 
@@ -232,13 +233,21 @@ uint32_t zs_pixel_word(zs_format fmt, uint32_t rgb);
 uint32_t zs_background_word(const zs_renderer *r);
 
 /* shade.c: colour planes and the Gouraud span fill */
-void zs_fill_gouraud(const zs_renderer *r, const zs_active_color *a, uint8_t *row, int x0, int x1);
+/* dy: the row's offset from the triangle's y0. */
+void zs_fill_gouraud(const zs_renderer *r, const zs_active_color *a, int32_t dy, uint8_t *row,
+                     int x0, int x1);
 /* Sets the colour planes and flat pixel of an active triangle. */
 /* ac: the triangle's colour planes, NULL for a flat-only renderer. */
 void zs_shade_setup(const zs_renderer *r, zs_active *a, zs_active_color *ac, const zs_tri *t,
                     const zs_vert *v[3], int32_t ox, int32_t oy, const zs_recip *area2,
                     int32_t y);
 uint32_t zs_light_color(uint32_t rgb, zs_fixed intensity);
+
+/* Depth (Q40) of active triangle a at the centre of column 0 of row y. */
+static inline int64_t zs_row_depth(const zs_active *a, int32_t y)
+{
+    return a->zrow + a->zdy * (int64_t)(y - a->y0);
+}
 
 /* span.c / zline.c: one row's visibility */
 void zs_span_row(zs_renderer *r, int y, uint8_t *row);

@@ -197,20 +197,21 @@ static void anchor_steep(zs_renderer *r, int32_t next)
 }
 
 /* An edge ends above row `next`: each of its triangles either ends too (freed
- * with its left edge) or goes on with its lower short edge (queued in cont). */
-static void retire_edge(zs_renderer *r, zs_edge *e, int32_t next, uint16_t *cont, int *n_cont)
+ * with its left edge) or goes on with its lower short edge (queued in cont).
+ * Returns the new length of cont. */
+static inline int retire_edge(zs_renderer *r, const zs_edge *e, int32_t next,
+                              uint16_t *cont, int n_cont)
 {
     zs_active *act = r->priv.active;
-    uint16_t *afree = r->priv.active_free;
     if (e->lead != ZS_NONE) {
-        zs_active *a = &act[e->lead];
-        if (next >= a->y_end)
-            afree[r->priv.n_active_free++] = e->lead;
+        if (next >= act[e->lead].y_end)
+            r->priv.active_free[r->priv.n_active_free++] = e->lead;
         else
-            cont[(*n_cont)++] = e->lead;
+            cont[n_cont++] = e->lead;
     }
     if (e->trail != ZS_NONE && next < act[e->trail].y_end)
-        cont[(*n_cont)++] = e->trail;
+        cont[n_cont++] = e->trail;
+    return n_cont;
 }
 
 /* Steps every edge to row y + 1, retires finished ones and keeps the list
@@ -218,34 +219,39 @@ static void retire_edge(zs_renderer *r, zs_edge *e, int32_t next, uint16_t *cont
  * Planes are not stepped: each is evaluated for the row it is needed on. */
 static void step_edges(zs_renderer *r, int32_t y)
 {
-    uint16_t *ael = r->priv.ael;
-    zs_edge *edges = r->priv.edges;
-    uint16_t *efree = r->priv.edge_free;
+    uint16_t *const ael = r->priv.ael;
+    zs_edge *const edges = r->priv.edges;
     /* continuations wait in the in-polygon set's array (unused between
      * rows): at most one per active triangle */
-    uint16_t *cont = r->priv.in_set;
-    int i, n = r->priv.n_ael, kept = 0, n_cont = 0;
-    int32_t next = y + 1, prev_x = INT32_MIN;
+    uint16_t *const cont = r->priv.in_set;
+    const int n = r->priv.n_ael;
+    const int32_t next = y + 1;
+    int i, kept = 0, n_cont = 0;
+    int32_t prev_x = INT32_MIN;
     for (i = 0; i < n; i++) {
-        uint16_t ei = ael[i];
-        zs_edge *e = &edges[ei];
+        const uint16_t ei = ael[i];
+        zs_edge *const e = &edges[ei];
+        int32_t x, err;
         if (next >= e->y_end) {
-            retire_edge(r, e, next, cont, &n_cont);
-            efree[r->priv.n_edge_free++] = ei;
+            n_cont = retire_edge(r, e, next, cont, n_cont);
+            r->priv.edge_free[r->priv.n_edge_free++] = ei;
             continue;
         }
-        e->x += e->step;
-        e->err -= e->rstep;
-        if (e->err < 0) {
-            e->err += e->den;
-            e->x++;
+        /* locals: a store through e could otherwise force reloads */
+        x = e->x + e->step;
+        err = e->err - e->rstep;
+        if (err < 0) {
+            err += e->den;
+            x++;
         }
-        if (e->x >= prev_x) {
-            prev_x = e->x;
+        e->x = x;
+        e->err = err;
+        if (x >= prev_x) {
+            prev_x = x;
             ael[kept++] = ei;
         } else {
             int j = kept;
-            for (; j > 0 && edges[ael[j - 1]].x > e->x; j--)
+            for (; j > 0 && edges[ael[j - 1]].x > x; j--)
                 ael[j] = ael[j - 1];
             ael[j] = ei;
             kept++;

@@ -97,14 +97,22 @@ static zs_active *range_top(zs_active *act, const uint16_t *set, int ns)
     return near && near->zhi <= (near == lo1_of ? lo2 : lo1) ? near : 0;
 }
 
+/* What the out-of-line helpers need besides the walk's locals. */
+typedef struct walk_ctx {
+    zs_renderer *r;
+    uint8_t *row;
+    int32_t y;
+} walk_ctx;
+
 /* Picks the top among the ns members at column x; sets each member's
  * crossing with it and the nearest of them in r->priv.min_cross. */
-static ZS_NOINLINE zs_active *retop(zs_renderer *r, int ns, int32_t x, int32_t y)
+static ZS_NOINLINE zs_active *retop(const walk_ctx *w, int ns, int32_t x)
 {
+    zs_renderer *r = w->r;
     zs_active *act = r->priv.active;
     const uint16_t *set = r->priv.in_set;
     zs_active *best = range_top(act, set, ns);
-    int32_t min_cross = NO_CROSS;
+    int32_t min_cross = NO_CROSS, y = w->y;
     int64_t bz = 0;
     int k;
     if (best) { /* nearer than every other member wherever they meet */
@@ -135,15 +143,16 @@ static ZS_NOINLINE zs_active *retop(zs_renderer *r, int ns, int32_t x, int32_t y
 }
 
 /* Writes [x0, x1) of a (NULL: the background). */
-static ZS_NOINLINE void put_span(const zs_renderer *r, int32_t y, uint8_t *row,
-                                 const zs_active *a, int32_t x0, int32_t x1)
+static ZS_NOINLINE void put_span(const walk_ctx *w, const zs_active *a, int32_t x0, int32_t x1)
 {
+    zs_renderer *r = w->r;
     if (!a)
-        zs_fill_flat(row, x0, x1, r->priv.bpp, r->priv.background);
+        zs_fill_flat(w->row, x0, x1, r->priv.bpp, r->priv.background);
     else if (a->flags & ZS_ACT_GOURAUD)
-        zs_fill_gouraud(r, &r->priv.acolor[a - r->priv.active], y - a->y0, row, x0, x1);
+        zs_fill_gouraud(r, &r->priv.acolor[a - r->priv.active], w->y - a->y0, w->row, x0, x1);
     else
-        zs_fill_flat(row, x0, x1, r->priv.bpp, a->pixel);
+        zs_fill_flat(w->row, x0, x1, r->priv.bpp, a->pixel);
+    r->stats.spans++;
 }
 
 /* A member other than the top left: the nearest crossing of the rest. */
@@ -163,14 +172,14 @@ static ZS_NOINLINE int32_t next_cross(const zs_renderer *r, int ns, const zs_act
 
 /* An entering triangle a at column x against the top (both in the set):
  * its crossing with the top, or 1 when it may be the new top (pick again). */
-static ZS_NOINLINE int enter_vs_top(zs_renderer *r, zs_active *a, zs_active *top, int32_t x,
-                                    int32_t y)
+static ZS_NOINLINE int enter_vs_top(const walk_ctx *w, zs_active *a, const zs_active *top,
+                                    int32_t x)
 {
-    int64_t za = depth_at(a, x, y), zt = depth_at(top, x, y);
-    r->stats.depth_evals += 2;
+    int64_t za = depth_at(a, x, w->y), zt = depth_at(top, x, w->y);
+    w->r->stats.depth_evals += 2;
     if (nearer(za, a, zt, top))
         return 1;
-    a->cross = overtake(r, a, top, x, za, zt);
+    a->cross = overtake(w->r, a, top, x, za, zt);
     return 0;
 }
 
@@ -178,44 +187,42 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
 {
     zs_active *const act = r->priv.active;
     const zs_edge *const edges = r->priv.edges;
-    const uint16_t *const ael = r->priv.ael;
+    const uint16_t *p = r->priv.ael;
+    const uint16_t *const end = p + r->priv.n_ael;
     uint16_t *const set = r->priv.in_set;
     const int32_t width = (int32_t)r->cfg.width;
-    const int n = r->priv.n_ael;
-    zs_active *top = 0;            /* nearest member, or NULL when the set is empty */
+    /* the nearest member; NULL while the set has members means "pick again
+     * once this column's events are in" */
+    zs_active *top = 0;
     const zs_active *pend_top = 0; /* span started at pend_x0, not yet written */
     int32_t pend_x0 = 0, cur = 0;
     int32_t min_cross = NO_CROSS;  /* first column where a member overtakes the top */
-    int ns = 0, dirty = 0;         /* set size; the top must be picked again */
-    uint32_t spans = 0;
-    int i;
-    for (i = 0;; i++) {
-        const zs_edge *e;
-        int32_t x;
+    int ns = 0;                    /* members of the in-polygon set */
+    walk_ctx w;
+    w.r = r;
+    w.row = row;
+    w.y = y;
+    for (;;) {
+        const zs_edge *e = 0;
+        int32_t x = width;
         uint16_t t;
-        if (i < n) {
-            e = &edges[ael[i]];
+        if (p != end) {
+            e = &edges[*p++];
             x = e->x;
-        } else {
-            e = 0;
-            x = width;
         }
         /* all events at a column are applied before its span; an edge left
          * of the screen acts at column 0, one right of it at the width */
         if (x > cur) {
             if (x > width)
                 x = width;
-            if (dirty) {
-                top = retop(r, ns, cur, y);
+            if (!top && ns > 0) {
+                top = retop(&w, ns, cur);
                 min_cross = r->priv.min_cross;
-                dirty = 0;
             }
             for (;;) {
                 if (top != pend_top) { /* spans of one surface merge */
-                    if (cur > pend_x0) {
-                        put_span(r, y, row, pend_top, pend_x0, cur);
-                        spans++;
-                    }
+                    if (cur > pend_x0)
+                        put_span(&w, pend_top, pend_x0, cur);
                     pend_top = top;
                     pend_x0 = cur;
                 }
@@ -223,7 +230,7 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
                     break;
                 cur = min_cross; /* a member overtakes the top: split */
                 r->stats.crossings++;
-                top = retop(r, ns, cur, y);
+                top = retop(&w, ns, cur);
                 min_cross = r->priv.min_cross;
             }
             cur = x;
@@ -235,17 +242,13 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
         if (t != ZS_NONE) {
             zs_active *a = &act[t];
             if (a->inside-- == 1) { /* leaves the set */
-                uint16_t last = set[--ns];
-                uint16_t pos = a->set_pos;
+                uint16_t last = set[--ns], pos = a->set_pos;
                 set[pos] = last;
                 act[last].set_pos = pos;
-                if (a == top) {
+                if (a == top)
                     top = 0;
-                    min_cross = NO_CROSS;
-                    dirty = ns > 0;
-                } else if (!dirty && a->cross == min_cross && min_cross != NO_CROSS) {
+                else if (top && a->cross == min_cross && min_cross != NO_CROSS)
                     min_cross = next_cross(r, ns, top);
-                }
             }
         }
         t = e->lead;
@@ -255,25 +258,22 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
                 a->set_pos = (uint16_t)ns;
                 set[ns++] = t;
                 a->cross = NO_CROSS;
-                if (dirty)
-                    continue; /* the pick after this column's events includes it */
                 if (!top) {
-                    top = a;
-                    min_cross = NO_CROSS;
+                    if (ns == 1) { /* the only member */
+                        top = a;
+                        min_cross = NO_CROSS;
+                    } /* else the pick after this column's events includes it */
                 } else if (always_nearer(top, a)) {
                     /* behind the top wherever both are: no crossing either */
-                } else if (always_nearer(a, top) || enter_vs_top(r, a, top, cur, y)) {
-                    dirty = 1; /* a new top: every member's crossing changes */
+                } else if (always_nearer(a, top) || enter_vs_top(&w, a, top, cur)) {
+                    top = 0; /* a new top: every member's crossing changes */
                 } else if (a->cross < min_cross) {
                     min_cross = a->cross;
                 }
             }
         }
     }
-    if (width > pend_x0) {
-        put_span(r, y, row, pend_top, pend_x0, width);
-        spans++;
-    }
-    r->stats.spans += spans;
+    if (width > pend_x0)
+        put_span(&w, pend_top, pend_x0, width);
     r->stats.pixels_shaded += (uint32_t)width;
 }

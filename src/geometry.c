@@ -247,6 +247,53 @@ static uint32_t face_color(const draw_ctx *c, uint32_t t)
     return col | (c->tri_flags << 24);
 }
 
+/* Is every one of the first n vertices inside near, far and the guard band?
+ * Decided from the 8 corners of their bounding box (fast path only): w is a
+ * rounded affine function of the position, so it lies within the corners'
+ * range; xc - guard * w may exceed the corners' values by the roundings of
+ * xc and w (under 1 + guard units), hence the margin. */
+#define INSIDE_MARGIN (2 * ZS_GUARD_MAX)
+static ZS_NOINLINE int box_inside(const draw_ctx *c, uint32_t n)
+{
+    const zs_renderer *r = c->r;
+    const int16_t *pos = c->mesh->positions;
+    int32_t lo[3], hi[3];
+    uint32_t i;
+    int k;
+    if (!c->fast || n == 0)
+        return 0;
+    for (k = 0; k < 3; k++)
+        lo[k] = hi[k] = pos[k];
+    for (i = 1; i < n; i++) {
+        const int16_t *p = pos + 3u * i;
+        for (k = 0; k < 3; k++) {
+            if (p[k] < lo[k])
+                lo[k] = p[k];
+            else if (p[k] > hi[k])
+                hi[k] = p[k];
+        }
+    }
+    for (k = 0; k < 8; k++) {
+        int32_t p[3];
+        int64_t s[3], gw;
+        int j;
+        p[0] = (k & 1) ? hi[0] : lo[0];
+        p[1] = (k & 2) ? hi[1] : lo[1];
+        p[2] = (k & 4) ? hi[2] : lo[2];
+        for (j = 0; j < 3; j++) /* the fast path of to_clip */
+            s[j] = zs_asr64((int64_t)c->clip[j][0] * p[0] + (int64_t)c->clip[j][1] * p[1] +
+                                (int64_t)c->clip[j][2] * p[2] + 32768,
+                            16) +
+                   c->clip_t[j];
+        if (s[2] < r->cam.near_z || s[2] > r->cam.far_z)
+            return 0;
+        gw = r->priv.guard * s[2] - INSIDE_MARGIN;
+        if (s[0] < -gw || s[0] > gw || s[1] < -gw || s[1] > gw)
+            return 0;
+    }
+    return 1;
+}
+
 /* Vertices base .. base + n - 1 of the pool from the mesh's first n. Out of
  * line (called once a draw), so its locals stay off zs_draw's frame, which
  * lies under the clipper's. */
@@ -255,12 +302,14 @@ static ZS_NOINLINE void transform_vertices(const draw_ctx *c, uint16_t base, uin
     zs_renderer *r = c->r;
     zs_vert *v = &r->priv.verts[base];
     uint32_t i;
+    /* a mesh wholly inside needs no outcode per vertex */
+    unsigned test = box_inside(c, n) ? 0u : (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_GUARD);
     for (i = 0; i < n; i++, v++) {
         int64_t xc, yc, w;
         to_clip(c, i, &xc, &yc, &w);
         if (r->priv.vshade)
             r->priv.vshade[base + i] = vertex_shade(c, i, w);
-        if (zs_outcode(r, xc, yc, w) & (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_GUARD))
+        if (test && (zs_outcode(r, xc, yc, w) & test))
             v->z = ZS_VERT_UNPROJECTED;
         else /* near <= w <= far: 32 bits */
             zs_project(r, xc, yc, (int32_t)w, &v->x, &v->y, &v->z);

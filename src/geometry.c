@@ -256,23 +256,30 @@ static uint32_t face_color(const draw_ctx *c, uint32_t t)
 static ZS_NOINLINE int box_inside(const draw_ctx *c, uint32_t n)
 {
     const zs_renderer *r = c->r;
-    const int16_t *pos = c->mesh->positions;
+    const int16_t *p = c->mesh->positions, *end = p + 3u * n;
     int32_t lo[3], hi[3];
-    uint32_t i;
+    int32_t lx, ly, lz, hx, hy, hz; /* scalars: the scan stays in registers */
     int k;
     if (!c->fast || n == 0)
         return 0;
-    for (k = 0; k < 3; k++)
-        lo[k] = hi[k] = pos[k];
-    for (i = 1; i < n; i++) {
-        const int16_t *p = pos + 3u * i;
-        for (k = 0; k < 3; k++) {
-            if (p[k] < lo[k])
-                lo[k] = p[k];
-            else if (p[k] > hi[k])
-                hi[k] = p[k];
-        }
+    lx = hx = p[0];
+    ly = hy = p[1];
+    lz = hz = p[2];
+    for (p += 3; p < end; p += 3) {
+        int32_t x = p[0], y = p[1], z = p[2];
+        lx = x < lx ? x : lx;
+        hx = x > hx ? x : hx;
+        ly = y < ly ? y : ly;
+        hy = y > hy ? y : hy;
+        lz = z < lz ? z : lz;
+        hz = z > hz ? z : hz;
     }
+    lo[0] = lx;
+    lo[1] = ly;
+    lo[2] = lz;
+    hi[0] = hx;
+    hi[1] = hy;
+    hi[2] = hz;
     for (k = 0; k < 8; k++) {
         int32_t p[3];
         int64_t s[3], gw;

@@ -67,6 +67,30 @@ static int fold_edge(zs_renderer *r, zs_edge *keep, uint16_t keep_i, zs_edge *du
     return 1;
 }
 
+/* Sorts edge indices by column clamped to the screen, by counting (a pass
+ * over the row's columns instead of log n passes over the edges): cheaper
+ * for more than a few dozen. Edges off either side keep their batch order
+ * among themselves: the walk treats them as at column 0 or at the width, and
+ * the next step's insertion pass puts them back in order of their true
+ * columns. Counts and output use the sort keys' scratch (8 bytes a column):
+ * 2 * (width + 2) + 2 * n bytes for n <= width. */
+static void count_sort(zs_renderer *r, uint16_t *a, int n)
+{
+    const zs_edge *edges = r->priv.edges;
+    const int32_t w = (int32_t)r->cfg.width;
+    uint16_t *count = (uint16_t *)(void *)r->priv.sort_keys, *out = count + w + 2;
+    int32_t c;
+    int i;
+    memset(count, 0, (size_t)(w + 2) * sizeof *count);
+    for (i = 0; i < n; i++)
+        count[zs_clampi(edges[a[i]].x, 0, w) + 1]++;
+    for (c = 1; c <= w; c++)
+        count[c] = (uint16_t)(count[c] + count[c - 1]);
+    for (i = 0; i < n; i++)
+        out[count[zs_clampi(edges[a[i]].x, 0, w)]++] = a[i];
+    memcpy(a, out, (size_t)n * sizeof *a);
+}
+
 /* Sorts edge indices by column. The keys (column, index) are packed into
  * 32-bit words so the sort never chases pointers; it runs in the z-buffer
  * line, which is idle while edges are added. Insertion sort for a few, a
@@ -86,6 +110,10 @@ static void sort_batch(zs_renderer *r, uint16_t *a, int n)
                 a[j] = a[j - 1];
             a[j] = e;
         }
+        return;
+    }
+    if (n > 24) {
+        count_sort(r, a, n);
         return;
     }
     tmp = key + n;

@@ -18,33 +18,38 @@ static unsigned clz64(uint64_t v)
 #endif
 }
 
-uint32_t zs_recip61(uint32_t d)
+/* Long division of the 64-bit (nh, nl) by v (top bit set, nh < v) in two
+ * base-2^16 digits, each estimated from v's high half and corrected at most
+ * twice (the classic schoolbook bound): 32-bit divisions and products only,
+ * so no 64-bit division helper is called. */
+uint32_t zs_udiv64_32(uint32_t nh, uint32_t nl, uint32_t v)
 {
-    /* Long division of 2^62 by v = 2d (top bit set) in two base-2^16
-     * digits, each estimated from v's high half and corrected at most twice
-     * (the classic schoolbook bound): 32-bit divisions and products only,
-     * so no 64-bit division helper is called. */
-    uint32_t v = d << 1, vh = v >> 16, vl = v & 0xFFFFu;
+    uint32_t vh = v >> 16, vl = v & 0xFFFFu, n1 = nl >> 16, n0 = nl & 0xFFFFu;
     uint32_t qh, ql, r, rem;
-    qh = (1u << 30) / vh; /* 2^62's high word is 2^30, its low word 0 */
-    r = (1u << 30) - qh * vh;
-    while (qh > 0xFFFFu || qh * vl > (r << 16)) {
+    qh = nh / vh;
+    r = nh - qh * vh;
+    while (qh > 0xFFFFu || qh * vl > ((r << 16) | n1)) {
         qh--;
         r += vh;
         if (r > 0xFFFFu)
             break;
     }
-    /* the partial remainder 2^46 - qh * v is below v: mod 2^32 is exact */
-    rem = 0u - qh * v;
+    /* the partial remainder (nh, n1) - qh * v is below v: mod 2^32 is exact */
+    rem = ((nh << 16) | n1) - qh * v;
     ql = rem / vh;
     r = rem - ql * vh;
-    while (ql > 0xFFFFu || ql * vl > (r << 16)) {
+    while (ql > 0xFFFFu || ql * vl > ((r << 16) | n0)) {
         ql--;
         r += vh;
         if (r > 0xFFFFu)
             break;
     }
     return (qh << 16) + ql;
+}
+
+uint32_t zs_recip61(uint32_t d)
+{
+    return zs_udiv64_32(1u << 30, 0u, d << 1); /* 2^62 / 2d */
 }
 
 void zs_recip_init(zs_recip *rc, int64_t d)
@@ -55,7 +60,8 @@ void zs_recip_init(zs_recip *rc, int64_t d)
         a <<= e;
     else
         a >>= -e;
-    rc->inv = (uint32_t)((((uint64_t)1 << 63) - 1u) / a); /* in (2^31, 2^32) */
+    /* (2^63 - 1) / a, in (2^31, 2^32) */
+    rc->inv = zs_udiv64_32(0x7FFFFFFFu, 0xFFFFFFFFu, (uint32_t)a);
     rc->exp = e;
     rc->neg = d < 0;
 }

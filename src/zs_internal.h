@@ -117,6 +117,8 @@ typedef struct zs_recip {
 void zs_recip_init(zs_recip *rc, int64_t d); /* d != 0 */
 /* floor(2^61 / d) for d in [2^30, 2^31), in (2^30, 2^31]. */
 uint32_t zs_recip61(uint32_t d);
+/* floor((nh * 2^32 + nl) / v) for v >= 2^31 and nh < v (32-bit steps only). */
+uint32_t zs_udiv64_32(uint32_t nh, uint32_t nl, uint32_t v);
 /* num * 2^bits / d to 31 significant bits (toward zero), clamped to +-limit;
  * for |num| < 2^62. */
 int64_t zs_recip_muldiv(const zs_recip *rc, int64_t num, int bits, int64_t limit);

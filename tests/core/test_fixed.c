@@ -275,6 +275,43 @@ static void test_recip61(void **state)
         check_recip61(0x40000000u + zt_below(&g, 0x40000000u));
 }
 
+static void check_udiv(uint32_t nh, uint32_t nl, uint32_t v)
+{
+    uint64_t n = ((uint64_t)nh << 32) | nl;
+    uint32_t want = (uint32_t)(n / v), got = zs_udiv64_32(nh, nl, v);
+    ZT_CHECK(got == want, "zs_udiv64_32(%lx:%08lx / %08lx) = %08lx, want %08lx",
+             (unsigned long)nh, (unsigned long)nl, (unsigned long)v, (unsigned long)got,
+             (unsigned long)want);
+    g_checks++;
+}
+
+/* zs_udiv64_32 (the reciprocal of a triangle's area, and zs_recip61) against
+ * the compiler's 64-bit division: the area reciprocal's numerator 2^63 - 1 for
+ * divisors near the ends, the 16-bit digit boundaries and at random; random
+ * numerators with nh < v; the largest numerators for each divisor. */
+static void test_udiv64_32(void **state)
+{
+    (void)state;
+    zt_rng g;
+    zt_rng_seed(&g, 0x0D1F643200000001ull);
+    for (uint32_t k = 0; k < 70000; k++) {
+        check_udiv(0x7FFFFFFFu, 0xFFFFFFFFu, 0x80000000u + k);
+        check_udiv(0x7FFFFFFFu, 0xFFFFFFFFu, 0xFFFFFFFFu - k);
+    }
+    for (uint32_t hi = 0x8000u; hi <= 0xFFFFu; hi++)
+        for (uint32_t lo = 0; lo < 3; lo++) {
+            check_udiv(0x7FFFFFFFu, 0xFFFFFFFFu, (hi << 16) | lo);
+            check_udiv(0x7FFFFFFFu, 0xFFFFFFFFu, (hi << 16) | (0xFFFFu - lo));
+        }
+    for (int k = 0; k < 2000000; k++) {
+        uint32_t v = 0x80000000u | zt_u32(&g);
+        uint32_t nh = zt_below(&g, v), nl = zt_u32(&g);
+        check_udiv(nh, nl, v);
+        check_udiv(v - 1u, 0xFFFFFFFFu, v); /* the largest numerator */
+        check_udiv(0x7FFFFFFFu, 0xFFFFFFFFu, v);
+    }
+}
+
 static void test_isqrt(void **state)
 {
     (void)state;
@@ -535,7 +572,7 @@ int main(void)
         cmocka_unit_test(test_mul),          cmocka_unit_test(test_div),
         cmocka_unit_test(test_sincos),       cmocka_unit_test(test_isqrt),
         cmocka_unit_test(test_mat_basic),    cmocka_unit_test(test_mat_mul_apply),
-        cmocka_unit_test(test_mat_rotate),   cmocka_unit_test(test_recip61),
+        cmocka_unit_test(test_mat_rotate),   cmocka_unit_test(test_recip61), cmocka_unit_test(test_udiv64_32),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     printf("test_fixed: seed %llx, %lu value checks, max sin/cos error %.2f LSB (tol %d, quadrants "

@@ -349,6 +349,17 @@ static uint16_t tag_of(uint32_t tag0, uint32_t t)
     return (uint16_t)((tag0 + t) % 65535u + 1u);
 }
 
+/* The same without a division per triangle (a helper call on Cortex-M0):
+ * base = tag0 % 65535, valid while t < 65535 (a uint16 count) and tag0 + t
+ * does not wrap. */
+static uint16_t tag_from_base(uint32_t base, uint32_t t)
+{
+    uint32_t v = base + t;
+    if (v >= 65535u)
+        v -= 65535u;
+    return (uint16_t)(v + 1u);
+}
+
 /* Is a before b in lexicographic order of (w, yc, xc)? */
 static ZS_NOINLINE int svert_before(const zs_svert *a, const zs_svert *b)
 {
@@ -420,7 +431,8 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
 {
     draw_ctx c;
     zs_vert *pool;
-    uint32_t i, t, vfit, room, tag0;
+    uint32_t i, t, vfit, room, tag0, tag_base;
+    int tag_fast;
     uint16_t base;
     if (!r || !m)
         return ZS_ERR_NULL;
@@ -457,6 +469,8 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     /* triangle t takes tag number tag0 + t (wrapping like the counter), so
      * only the triangles that reach setup compute their tag */
     tag0 = r->priv.tag_counter;
+    tag_base = tag0 % 65535u;
+    tag_fast = tag0 <= UINT32_MAX - m->triangle_count; /* and t < 65535: uint16 count */
     r->priv.tag_counter += m->triangle_count;
     for (t = 0; t < m->triangle_count; t++) {
         const uint16_t *idx = m->indices + 3u * t;
@@ -472,7 +486,8 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
         v1 = &pool[base + i1];
         v2 = &pool[base + i2];
         if ((v0->z | v1->z | v2->z) & ZS_VERT_UNPROJECTED) {
-            outcome = clip_and_setup(&c, base, t, tag_of(tag0, t));
+            outcome = clip_and_setup(&c, base, t,
+                                     tag_fast ? tag_from_base(tag_base, t) : tag_of(tag0, t));
         } else {
             int64_t area2 = zs_area2(v0, v1, v2);
             if (area2 >= 0) /* culled before lighting the face */
@@ -480,7 +495,8 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
             else
                 outcome = zs_setup_triangle(r, (uint16_t)(base + i0), (uint16_t)(base + i1),
                                             (uint16_t)(base + i2), area2, face_color(&c, t),
-                                            tag_of(tag0, t));
+                                            tag_fast ? tag_from_base(tag_base, t)
+                                                     : tag_of(tag0, t));
         }
         count_outcome(&r->stats, outcome);
     }

@@ -89,8 +89,12 @@ static void depth_plane(zs_active *a, const zs_vert *s[3], const zs_recip *area2
     int64_t dx2 = (int64_t)s[2]->x - s[0]->x, dy2 = (int64_t)s[2]->y - s[0]->y;
     int64_t dz1 = (int64_t)s[1]->z - s[0]->z, dz2 = (int64_t)s[2]->z - s[0]->z;
     int64_t z0, w16, h16;
-    a->zdx = zs_recip_muldiv(area2, dz1 * dy2 - dz2 * dy1, 14, ZS_DEPTH_GRADIENT_LIMIT);
-    a->zdy = zs_recip_muldiv(area2, dz2 * dx1 - dz1 * dx2, 14, ZS_DEPTH_GRADIENT_LIMIT);
+    /* |dz| <= 2^30, |dx|, |dy| < 2^18: products of 32-bit values */
+    int32_t z1 = (int32_t)dz1, z2 = (int32_t)dz2;
+    a->zdx = zs_recip_muldiv(area2, zs_smul32(z1, (int32_t)dy2) - zs_smul32(z2, (int32_t)dy1), 14,
+                             ZS_DEPTH_GRADIENT_LIMIT);
+    a->zdy = zs_recip_muldiv(area2, zs_smul32(z2, (int32_t)dx1) - zs_smul32(z1, (int32_t)dx2), 14,
+                             ZS_DEPTH_GRADIENT_LIMIT);
     /* Below 2^32 each, the spread is under 2 * 2^28 * 2^17 = 2^46: the
      * common case needs no products. */
     if ((uint64_t)(abs64(a->zdx) | abs64(a->zdy)) >= ((uint64_t)1 << 32)) {
@@ -103,10 +107,11 @@ static void depth_plane(zs_active *a, const zs_vert *s[3], const zs_recip *area2
     }
     /* depth at the origin pixel centre, from vertex 0 (less than a pixel away) */
     z0 = (int64_t)s[0]->z * 1024 +
-         zs_asr64(a->zdx * (16 * (int64_t)ox + 8 - s[0]->x) +
-                      a->zdy * (16 * (int64_t)oy + 8 - s[0]->y),
+         zs_asr64(zs_mul64_small(a->zdx, 16 * ox + 8 - s[0]->x) +
+                      zs_mul64_small(a->zdy, 16 * oy + 8 - s[0]->y),
                   4);
-    a->zrow = z0 + a->zdy * ((int64_t)y - oy) - a->zdx * ox;
+    /* |ox|, |oy| < 2^13 (the guard band), gradients <= 2^48 */
+    a->zrow = z0 + zs_mul64_small(a->zdy, y - oy) - zs_mul64_small(a->zdx, ox);
     a->y0 = (int16_t)y;
 }
 
@@ -173,7 +178,7 @@ void zs_anchor_depth(const zs_renderer *r, zs_active *a, int32_t xa, int32_t y)
         z += zs_muldiv64(((int64_t)s[1]->z - s[0]->z) * 1024, l1, d, 1) +
              zs_muldiv64(((int64_t)s[2]->z - s[0]->z) * 1024, l2, d, 1);
     /* stored for row y0: row y's constant comes back exactly */
-    a->zrow = z - a->zdx * xa - a->zdy * (int64_t)(y - a->y0);
+    a->zrow = z - zs_mul64_small(a->zdx, xa) - zs_mul64_small(a->zdy, y - a->y0);
 }
 
 /* Takes an edge from the pool for a -> b, owned by ai on one side, and

@@ -80,7 +80,7 @@ int64_t zs_recip_muldiv(const zs_recip *rc, int64_t num, int bits, int64_t limit
     else if (sh <= 0)
         q = (uint64_t)limit;
     else
-        q = (n * rc->inv) >> sh;
+        q = zs_umul32((uint32_t)n, rc->inv) >> sh; /* n < 2^31 */
     if (q > (uint64_t)limit)
         q = (uint64_t)limit;
     return ((num < 0) != rc->neg) ? -(int64_t)q : (int64_t)q;

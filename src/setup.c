@@ -24,11 +24,19 @@ static unsigned norm_shift(uint32_t v)
 
 /* floor(v * inv / 2^sh) for |v| * inv < 2^64: the magnitude is formed
  * unsigned, as |v| may reach guard * w and the product 2^63. */
-static int64_t mul_floor_shift(int64_t v, uint64_t inv, unsigned sh)
+/* |v| * inv for inv < 2^32 and a product below 2^64 (so the high word of
+ * |v| times inv fits 32 bits). */
+static uint64_t mag_mul(uint64_t m, uint32_t inv)
+{
+    return zs_umul32((uint32_t)(m & 0xFFFFFFFFu), inv) +
+           ((uint64_t)((uint32_t)(m >> 32) * inv) << 32);
+}
+
+static int64_t mul_floor_shift(int64_t v, uint32_t inv, unsigned sh)
 {
     if (v >= 0)
-        return (int64_t)(((uint64_t)v * inv) >> sh);
-    return -(int64_t)(((((uint64_t)0 - (uint64_t)v) * inv) + (((uint64_t)1 << sh) - 1u)) >> sh);
+        return (int64_t)(mag_mul((uint64_t)v, inv) >> sh);
+    return -(int64_t)((mag_mul((uint64_t)0 - (uint64_t)v, inv) + (((uint64_t)1 << sh) - 1u)) >> sh);
 }
 
 /* One division per vertex: 1/w as a normalised reciprocal, then products.
@@ -43,20 +51,26 @@ void zs_project(const zs_renderer *r, int64_t xc, int64_t yc, int32_t w, int16_t
     int64_t hw = 8 * (int64_t)r->cfg.width; /* half the width in 1/16 px */
     int64_t hh = 8 * (int64_t)r->cfg.height;
     unsigned s = norm_shift((uint32_t)w);
-    uint64_t inv = zs_recip61((uint32_t)w << s);
+    uint32_t inv = zs_recip61((uint32_t)w << s);
     int64_t nx = mul_floor_shift(xc, inv, 33u - s); /* xc / w in Q28 */
     int64_t ny = mul_floor_shift(yc, inv, 33u - s);
-    int64_t q = (int64_t)(((uint64_t)r->cam.near_z * inv) >> (31u - s)); /* near / w, Q30 */
+    int64_t q = (int64_t)(zs_umul32((uint32_t)r->cam.near_z, inv) >> (31u - s)); /* near / w, Q30 */
     int64_t zz;
     /* the guard band keeps these within int16 (clamped all the same) */
-    *x = (int16_t)zs_clampi((int32_t)(hw + zs_asr64(hw * nx + ((int64_t)1 << 27), 28)), -32767,
-                            32767);
-    *y = (int16_t)zs_clampi((int32_t)(hh - zs_asr64(hh * ny + ((int64_t)1 << 27), 28)), -32767,
-                            32767);
+    *x = (int16_t)zs_clampi(
+        (int32_t)(hw + zs_asr64(zs_mul64_small(nx, (int32_t)hw) + ((int64_t)1 << 27), 28)), -32767,
+        32767);
+    *y = (int16_t)zs_clampi(
+        (int32_t)(hh - zs_asr64(zs_mul64_small(ny, (int32_t)hh) + ((int64_t)1 << 27), 28)), -32767,
+        32767);
     if (q >= ((int64_t)1 << 30)) {
         zz = 0;
     } else if (r->priv.depth_scale != 0) {
-        zz = zs_asr64((((int64_t)1 << 30) - q) * r->priv.depth_scale, 30);
+        /* (2^30 - q) <= 2^30 times depth_scale < 2^33: its two words */
+        uint32_t m = (uint32_t)(((int64_t)1 << 30) - q);
+        uint64_t ds = (uint64_t)r->priv.depth_scale;
+        zz = (int64_t)((zs_umul32(m, (uint32_t)(ds & 0xFFFFFFFFu)) +
+                        ((uint64_t)(m * (uint32_t)(ds >> 32)) << 32)) >> 30);
     } else { /* near close to far: A too large for the product */
         int64_t f = r->cam.far_z;
         zz = (((int64_t)1 << 30) - q) * f / (f - r->cam.near_z);

@@ -26,7 +26,7 @@
 
 static int64_t depth_at(const zs_active *a, int32_t x, int32_t y)
 {
-    return zs_row_depth(a, y) + a->zdx * x;
+    return zs_row_depth(a, y) + zs_mul64_small(a->zdx, x);
 }
 
 /* Does (za, a) win over (zb, b)? Nearer first, then the earlier record. */
@@ -65,7 +65,8 @@ static int32_t overtake(const zs_renderer *r, const zs_active *j, const zs_activ
         lim = lj;
     if (lim - x <= 1)
         return NO_CROSS;
-    reach = slope * (lim - x - 1); /* how much the gap closes by the last shared column */
+    /* how much the gap closes by the last shared column (|slope| <= 2^49) */
+    reach = zs_mul64_small(slope, lim - x - 1);
     if (reach < gap || (reach == gap && !j_wins_tie))
         return NO_CROSS;
     k = j_wins_tie ? (gap + slope - 1) / slope : gap / slope + 1;

@@ -88,7 +88,7 @@ void zs_zline_row(zs_renderer *r, int y, uint8_t *row)
         /* locals: the depth stores could otherwise alias the record */
         dz = act[ai].zdx;
         tri = act[ai].tri;
-        z = zs_row_depth(&act[ai], y) + dz * xl;
+        z = zs_row_depth(&act[ai], y) + zs_mul64_small(dz, xl);
         for (x = xl; x < xr; x++, z += dz) {
             /* nearer wins; at equal depth the earlier record (exact ties) */
             if (z < depth[x] || (z == depth[x] && tri < act[owner[x]].tri)) {

@@ -245,12 +245,6 @@ void zs_shade_setup(const zs_renderer *r, zs_active *a, zs_active_color *ac, con
                     int32_t y);
 uint32_t zs_light_color(uint32_t rgb, zs_fixed intensity);
 
-/* Depth (Q40) of active triangle a at the centre of column 0 of row y. */
-static inline int64_t zs_row_depth(const zs_active *a, int32_t y)
-{
-    return a->zrow + a->zdy * (int64_t)(y - a->y0);
-}
-
 /* span.c / zline.c: one row's visibility */
 void zs_span_row(zs_renderer *r, int y, uint8_t *row);
 void zs_zline_row(zs_renderer *r, int y, uint8_t *row);
@@ -277,6 +271,64 @@ static inline int32_t zs_sat32(int64_t v, uint32_t *saturated)
         return v > 0 ? INT32_MAX : -INT32_MAX;
     }
     return (int32_t)v;
+}
+
+/* ---- products without the Cortex-M0 helper ----
+ * Cortex-M0 has no 32x32->64 multiply: each 64-bit product is a call of
+ * __aeabi_lmul. These give the same exact results from 32-bit products
+ * there (ZS_SPLIT_PRODUCTS selects them elsewhere, for the tests). */
+#if defined(__ARM_ARCH_6M__) || defined(ZS_SPLIT_PRODUCTS)
+#define ZS_SPLIT_MUL 1
+#endif
+
+/* a * b where |a| / 2^32 * |b| < 2^31 and |b| < 2^15 (for example |a| <=
+ * 2^48 with a row or column offset): depth planes. */
+static inline int64_t zs_mul64_small(int64_t a, int32_t b)
+{
+#ifdef ZS_SPLIT_MUL
+    /* a = hi * 2^32 + mid * 2^16 + low with hi = floor(a / 2^32) and mid,
+     * low in [0, 2^16): each partial product fits 32 bits */
+    int32_t hi = (int32_t)zs_asr64(a, 32);
+    uint32_t lo32 = (uint32_t)((uint64_t)a & 0xFFFFFFFFu);
+    int32_t mid = (int32_t)(lo32 >> 16), low = (int32_t)(lo32 & 0xFFFFu);
+    return (int64_t)(hi * b) * 4294967296 + (int64_t)(mid * b) * 65536 + low * b;
+#else
+    return a * b;
+#endif
+}
+
+/* a * b for any 32-bit unsigned a and b. */
+static inline uint64_t zs_umul32(uint32_t a, uint32_t b)
+{
+#ifdef ZS_SPLIT_MUL
+    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t ll = al * bl, mid1 = al * bh, mid2 = ah * bl, hh = ah * bh;
+    uint32_t mid = mid1 + mid2, carry = mid < mid1 ? 0x10000u : 0u;
+    uint32_t lo = ll + (mid << 16);
+    hh += (mid >> 16) + carry + (lo < ll ? 1u : 0u);
+    return ((uint64_t)hh << 32) | lo;
+#else
+    return (uint64_t)a * b;
+#endif
+}
+
+/* a * b for |a| < 2^31 and |b| < 2^31 (products of differences). */
+static inline int64_t zs_smul32(int32_t a, int32_t b)
+{
+#ifdef ZS_SPLIT_MUL
+    uint32_t ua = a < 0 ? 0u - (uint32_t)a : (uint32_t)a;
+    uint32_t ub = b < 0 ? 0u - (uint32_t)b : (uint32_t)b;
+    uint64_t p = zs_umul32(ua, ub);
+    return (a < 0) != (b < 0) ? -(int64_t)p : (int64_t)p;
+#else
+    return (int64_t)a * b;
+#endif
+}
+
+/* Depth (Q40) of active triangle a at the centre of column 0 of row y. */
+static inline int64_t zs_row_depth(const zs_active *a, int32_t y)
+{
+    return a->zrow + zs_mul64_small(a->zdy, y - a->y0);
 }
 
 static inline int32_t zs_clampi(int32_t v, int32_t lo, int32_t hi)

@@ -76,8 +76,8 @@ static int32_t overtake(const zs_renderer *r, const zs_active *j, const zs_activ
 /* The top by depth ranges alone, or NULL: the member whose range ends first
  * wins outright if it ends before every other range starts (typical where
  * surfaces are apart in depth); then no plane is evaluated and nothing can
- * overtake it. */
-static zs_active *range_top(zs_active *act, const uint16_t *set, int ns)
+ * overtake it. *others_lo: the smallest zlo of the other members. */
+static zs_active *range_top(zs_active *act, const uint16_t *set, int ns, uint16_t *others_lo)
 {
     zs_active *near = 0;
     const zs_active *lo1_of = 0;
@@ -95,7 +95,8 @@ static zs_active *range_top(zs_active *act, const uint16_t *set, int ns)
             lo2 = a->zlo;
         }
     }
-    return near && near->zhi <= (near == lo1_of ? lo2 : lo1) ? near : 0;
+    *others_lo = near == lo1_of ? lo2 : lo1;
+    return near && near->zhi <= *others_lo ? near : 0;
 }
 
 /* What the out-of-line helpers need besides the walk's locals. */
@@ -106,17 +107,20 @@ typedef struct walk_ctx {
 } walk_ctx;
 
 /* Picks the top among the ns members at column x; sets each member's
- * crossing with it and the nearest of them in r->priv.min_cross. */
+ * crossing with it and the nearest of them in r->priv.min_cross, and the
+ * smallest zlo of the other members in r->priv.others_lo. */
 static ZS_NOINLINE zs_active *retop(const walk_ctx *w, int ns, int32_t x)
 {
     zs_renderer *r = w->r;
     zs_active *act = r->priv.active;
     const uint16_t *set = r->priv.in_set;
-    zs_active *best = range_top(act, set, ns);
+    uint16_t others_lo;
+    zs_active *best = range_top(act, set, ns, &others_lo);
     int32_t min_cross = NO_CROSS, y = w->y;
     int64_t bz = 0;
     int k;
     if (best) { /* nearer than every other member wherever they meet */
+        r->priv.others_lo = others_lo;
         for (k = 0; k < ns; k++)
             act[set[k]].cross = NO_CROSS;
         r->priv.min_cross = NO_CROSS;
@@ -131,15 +135,19 @@ static ZS_NOINLINE zs_active *retop(const walk_ctx *w, int ns, int32_t x)
         }
     }
     r->stats.depth_evals += (uint32_t)ns;
+    others_lo = 0xFFFFu;
     for (k = 0; k < ns; k++) {
         zs_active *a = &act[set[k]];
         if (a == best)
             continue;
+        if (a->zlo < others_lo)
+            others_lo = a->zlo;
         a->cross = always_nearer(best, a) ? NO_CROSS : overtake(r, a, best, x, a->zcur, bz);
         if (a->cross < min_cross)
             min_cross = a->cross;
     }
     r->priv.min_cross = min_cross;
+    r->priv.others_lo = others_lo;
     return best;
 }
 
@@ -198,6 +206,7 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
     const zs_active *pend_top = 0; /* span started at pend_x0, not yet written */
     int32_t pend_x0 = 0, cur = 0;
     int32_t min_cross = NO_CROSS;  /* first column where a member overtakes the top */
+    uint16_t others_lo = 0xFFFFu;  /* at most the smallest zlo of the other members */
     int ns = 0;                    /* members of the in-polygon set */
     walk_ctx w;
     w.r = r;
@@ -207,6 +216,7 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
         const zs_edge *e = 0;
         int32_t x = width;
         uint16_t t;
+        int handover; /* the top left at this edge with no crossing pending */
         if (p != end) {
             e = &edges[*p++];
             x = e->x;
@@ -219,6 +229,7 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
             if (!top && ns > 0) {
                 top = retop(&w, ns, cur);
                 min_cross = r->priv.min_cross;
+                others_lo = r->priv.others_lo;
             }
             for (;;) {
                 if (top != pend_top) { /* spans of one surface merge */
@@ -233,12 +244,14 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
                 r->stats.crossings++;
                 top = retop(&w, ns, cur);
                 min_cross = r->priv.min_cross;
+                others_lo = r->priv.others_lo;
             }
             cur = x;
         }
         if (!e)
             break;
         /* in/out counters: a span inverted by rounding is never entered */
+        handover = 0;
         t = e->trail;
         if (t != ZS_NONE) {
             zs_active *a = &act[t];
@@ -246,9 +259,11 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
                 uint16_t last = set[--ns], pos = a->set_pos;
                 set[pos] = last;
                 act[last].set_pos = pos;
-                if (a == top)
+                if (a == top) {
+                    /* nothing overtakes it: every member's crossing is none */
+                    handover = min_cross == NO_CROSS;
                     top = 0;
-                else if (top && a->cross == min_cross && min_cross != NO_CROSS)
+                } else if (top && a->cross == min_cross && min_cross != NO_CROSS)
                     min_cross = next_cross(r, ns, top);
             }
         }
@@ -263,13 +278,23 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
                     if (ns == 1) { /* the only member */
                         top = a;
                         min_cross = NO_CROSS;
+                        others_lo = 0xFFFFu;
+                    } else if (handover && a->zhi <= others_lo) {
+                        /* the top left through the edge a enters by, and a is
+                         * nearer than every other member wherever they meet */
+                        top = a;
                     } /* else the pick after this column's events includes it */
                 } else if (always_nearer(top, a)) {
                     /* behind the top wherever both are: no crossing either */
+                    if (a->zlo < others_lo)
+                        others_lo = a->zlo;
                 } else if (always_nearer(a, top) || enter_vs_top(&w, a, top, cur)) {
                     top = 0; /* a new top: every member's crossing changes */
-                } else if (a->cross < min_cross) {
-                    min_cross = a->cross;
+                } else {
+                    if (a->cross < min_cross)
+                        min_cross = a->cross;
+                    if (a->zlo < others_lo)
+                        others_lo = a->zlo;
                 }
             }
         }

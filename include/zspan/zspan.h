@@ -388,6 +388,7 @@ typedef struct zs_renderer_private {
     int32_t next_row;
     uint16_t n_verts, n_tris, n_ael, n_sorted, n_edge_free, n_active_free;
     int32_t min_cross;                /* span walk: nearest crossing after a pick */
+    uint16_t others_lo;               /* span walk: least depth bound of the rest */
     uint8_t state, mode, bpp;
     uint8_t steep;                    /* a steep plane is active this frame */
     zs_setup_hook_fn setup_hook;

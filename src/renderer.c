@@ -205,7 +205,8 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
         rows > (int)r->cfg.height - y0)
         return ZS_ERR_ROW;
     if (stride < (size_t)r->cfg.width * r->priv.bpp ||
-        stride > (SIZE_MAX - (size_t)r->cfg.width * r->priv.bpp) / (size_t)rows)
+        (rows > 1 && /* no division for one row (a helper call on Cortex-M0) */
+         stride > (SIZE_MAX - (size_t)r->cfg.width * r->priv.bpp) / (size_t)rows))
         return ZS_ERR_BUFFER; /* too small, or rows * stride past the address space */
     if (r->priv.state == ZS_STATE_OPEN) {
         zs_raster_begin(r);

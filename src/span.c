@@ -69,7 +69,24 @@ static int32_t overtake(const zs_renderer *r, const zs_active *j, const zs_activ
     reach = zs_mul64_small(slope, lim - x - 1);
     if (reach < gap || (reach == gap && !j_wins_tie))
         return NO_CROSS;
+#ifdef ZS_SPLIT_MUL
+    /* the first k in [1, lim - x - 1] where slope * k reaches the gap (passes
+     * it when the tie goes to top), by bisection: no 64-bit division helper */
+    {
+        int32_t lo = 1, hi = lim - x - 1;
+        while (lo < hi) {
+            int32_t mid = lo + (hi - lo) / 2;
+            int64_t c = zs_mul64_small(slope, mid);
+            if (c > gap || (c == gap && j_wins_tie))
+                hi = mid;
+            else
+                lo = mid + 1;
+        }
+        k = lo;
+    }
+#else
     k = j_wins_tie ? (gap + slope - 1) / slope : gap / slope + 1;
+#endif
     return x + (int32_t)k;
 }
 

@@ -228,6 +228,15 @@ if [ -f "$caps_h" ]; then
     done
 fi
 
+# --- how cost grows: the scaling benchmark (mk/firmware_scale.mk sets BENCH_SCALE_BIN);
+# its frames-per-second estimates use the Cortex-M counts above --------------------------
+if [ -n "${BENCH_SCALE_BIN:-}" ]; then
+    note "scaling benchmark"
+    BENCH_SCALE=$BENCH_SCALE_BIN SCALE_WORK="$WORK/scale" SCALE_OUT="$WORK/scale.md" \
+        FW_FILES="$WORK/m4.txt $WORK/m0.txt $WORK/m0big.txt" bash bench/run_scale.sh || fail=1
+    [ -s "$WORK/scale.md" ] && { echo; cat "$WORK/scale.md"; } >> "$WORK/table.md"
+fi
+
 cp "$WORK/table.md" "$BENCH_OUT"
 cat "$BENCH_OUT"
 echo

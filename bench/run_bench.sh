@@ -15,6 +15,8 @@
 #          scenes whose arena fits; the M0 code of the others is measured on
 #          mps2-an386 (same instructions, more RAM);
 # and checks that every frame's checksum is the same on host, M4 and M0.
+# With BENCH_SCALE_BIN set (mk/firmware_scale.mk), it then runs the scaling
+# benchmark (bench/run_scale.sh) and appends its section "How cost grows".
 
 set -u
 set -o pipefail

@@ -415,6 +415,14 @@ static int render_frames(const scene_src *s, const caps *cp, zs_visibility mode,
             goto out;
         }
         stt = zs_frame_stats(&r);
+        if (!sums && stt->tris_dropped + stt->verts_dropped + stt->records_skipped) {
+            /* a count of a frame that lost triangles would mislead */
+            fprintf(stderr, "bench_scale: %s frame %d: pools too small for --caps (%lu "
+                            "triangles, %lu vertices dropped, %lu records skipped)\n",
+                    s->c->name, f, (unsigned long)stt->tris_dropped,
+                    (unsigned long)stt->verts_dropped, (unsigned long)stt->records_skipped);
+            goto out;
+        }
         if (sum_out)
             sum_out[f] = fnv1a(BENCH_FNV_BASIS, img, stride * s->c->h);
         if (sums) {

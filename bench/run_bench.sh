@@ -15,6 +15,8 @@
 #          scenes whose arena fits; the M0 code of the others is measured on
 #          mps2-an386 (same instructions, more RAM);
 # and checks that every frame's checksum is the same on host, M4 and M0.
+# With BENCH_SCALE_BIN set (mk/firmware_scale.mk), it then runs the scaling
+# benchmark (bench/run_scale.sh) and appends its section "How cost grows".
 
 set -u
 set -o pipefail
@@ -226,6 +228,15 @@ if [ -f "$caps_h" ]; then
         c=$(sed -n "s/^#define BENCH_CAPS_$u //p" "$caps_h")
         sed -i "s/^| $s |  | /| $s | $c | /" "$WORK/table.md"
     done
+fi
+
+# --- how cost grows: the scaling benchmark (mk/firmware_scale.mk sets BENCH_SCALE_BIN);
+# its frames-per-second estimates use the Cortex-M counts above --------------------------
+if [ -n "${BENCH_SCALE_BIN:-}" ]; then
+    note "scaling benchmark"
+    BENCH_SCALE=$BENCH_SCALE_BIN SCALE_WORK="$WORK/scale" SCALE_OUT="$WORK/scale.md" \
+        FW_FILES="$WORK/m4.txt $WORK/m0.txt $WORK/m0big.txt" bash bench/run_scale.sh || fail=1
+    [ -s "$WORK/scale.md" ] && { echo; cat "$WORK/scale.md"; } >> "$WORK/table.md"
 fi
 
 cp "$WORK/table.md" "$BENCH_OUT"

@@ -68,9 +68,8 @@ void zs_shade_setup(const zs_renderer *r, zs_active *a, zs_active_color *ac, con
     } u;
     if (r->shade.format == ZS_FMT_ID16) {
         a->flags &= (uint8_t)~ZS_ACT_GOURAUD;
-        u.w = 0;
         u.h = (uint16_t)t->color;
-        a->pixel = u.w;
+        a->pixel = (uint32_t)u.h * 0x10001u; /* the tag twice (see zs_pixel_word) */
         return;
     }
     if ((t->color >> 24) == 0 || !r->priv.vshade) { /* no per-vertex colour: flat */

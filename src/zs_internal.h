@@ -229,7 +229,8 @@ static inline void zs_store_rgb888(uint8_t *p, uint32_t r, uint32_t g, uint32_t 
 }
 void zs_pack_pixel(zs_format fmt, uint32_t rgb, uint8_t out[4]);
 /* The packed pixel as a word whose bytes in memory are the pixel's bytes
- * (what zs_fill_flat writes). */
+ * (what zs_fill_flat writes); a 2-byte pixel is held twice (bytes 0, 1 and
+ * 2, 3), so a fill stores the word as it is. */
 uint32_t zs_pixel_word(zs_format fmt, uint32_t rgb);
 /* The frame's packed background (tag 0 in ZS_FMT_ID16). */
 uint32_t zs_background_word(const zs_renderer *r);
@@ -344,41 +345,56 @@ typedef uint16_t zs_half_alias __attribute__((may_alias));
 #define ZS_WORD_STORES 1
 #endif
 
-/* n pixels of 2 bytes (b0, b1) from p. */
-static inline void zs_fill2(uint8_t *p, int n, uint8_t b0, uint8_t b1)
+/* n pixels of 2 bytes from p; pair holds the pixel twice (its bytes in
+ * memory are b0 b1 b0 b1, as zs_pixel_word packs 2-byte formats), so it is
+ * stored as it is, a word or a half at a time. */
+static inline void zs_fill2(uint8_t *p, int n, uint32_t pair)
 {
 #ifdef ZS_WORD_STORES
-    if (((uintptr_t)p & 1u) == 0 && n > 0) {
-        union {
-            uint8_t b[4];
-            uint32_t w;
-            uint16_t h[2];
-        } u;
+    if (((uintptr_t)p & 1u) == 0) {
         zs_word_alias *q;
-        u.b[0] = u.b[2] = b0;
-        u.b[1] = u.b[3] = b1;
+        if (n <= 0)
+            return;
         if ((uintptr_t)p & 2u) {
-            *(zs_half_alias *)(void *)p = u.h[0];
+            *(zs_half_alias *)(void *)p = (uint16_t)pair; /* both halves are the pixel */
             p += 2;
             n--;
         }
         q = (zs_word_alias *)(void *)p;
         for (; n >= 8; n -= 8, q += 4) {
-            q[0] = u.w;
-            q[1] = u.w;
-            q[2] = u.w;
-            q[3] = u.w;
+            q[0] = pair;
+            q[1] = pair;
+            q[2] = pair;
+            q[3] = pair;
         }
-        for (; n >= 2; n -= 2)
-            *q++ = u.w;
-        if (n)
-            *(zs_half_alias *)(void *)q = u.h[0];
+        switch (n >> 1) { /* the rest: up to three words, then a half */
+        case 3:
+            *q++ = pair;
+            /* fall through */
+        case 2:
+            *q++ = pair;
+            /* fall through */
+        case 1:
+            *q++ = pair;
+            break;
+        default:
+            break;
+        }
+        if (n & 1)
+            *(zs_half_alias *)(void *)q = (uint16_t)pair;
         return;
     }
 #endif
-    for (; n > 0; n--, p += 2) {
-        p[0] = b0;
-        p[1] = b1;
+    {
+        union {
+            uint32_t w;
+            uint8_t b[4];
+        } u;
+        u.w = pair;
+        for (; n > 0; n--, p += 2) {
+            p[0] = u.b[0];
+            p[1] = u.b[1];
+        }
     }
 }
 
@@ -393,7 +409,7 @@ static inline void zs_fill_flat_body(uint8_t *row, int x0, int x1, unsigned bpp,
     int n = x1 - x0;
     u.w = pixel;
     if (bpp == 2) {
-        zs_fill2(p, n, u.b[0], u.b[1]);
+        zs_fill2(p, n, pixel);
     } else if (bpp == 1) {
         for (; n > 0; n--)
             *p++ = u.b[0];

@@ -304,7 +304,7 @@ static ZS_NOINLINE int box_inside(const draw_ctx *c, uint32_t n)
 /* Vertices base .. base + n - 1 of the pool from the mesh's first n. Out of
  * line (called once a draw), so its locals stay off zs_draw's frame, which
  * lies under the clipper's. */
-static ZS_NOINLINE void transform_vertices(const draw_ctx *c, uint16_t base, uint32_t n)
+static ZS_NOINLINE int transform_vertices(const draw_ctx *c, uint16_t base, uint32_t n)
 {
     zs_renderer *r = c->r;
     zs_vert *v = &r->priv.verts[base];
@@ -321,7 +321,9 @@ static ZS_NOINLINE void transform_vertices(const draw_ctx *c, uint16_t base, uin
         else /* near <= w <= far: 32 bits */
             zs_project(r, xc, yc, (int32_t)w, &v->x, &v->y, &v->z);
     }
+    return test == 0;
 }
+
 
 /* Outcome priority when pieces of one clipped triangle end differently. */
 static int merge_outcome(int have, int piece)
@@ -427,12 +429,38 @@ static ZS_COLD int clip_and_setup(draw_ctx *c, uint16_t base, uint32_t t, uint16
     return outcome;
 }
 
+/* The triangles of a draw whose vertices all fit the pool and are all
+ * projected (the mesh is inside): no per-triangle index or clip test, counts
+ * kept in locals. */
+static ZS_NOINLINE void setup_inside(draw_ctx *c, uint16_t base, uint32_t tag_base)
+{
+    zs_renderer *r = c->r;
+    const zs_mesh *m = c->mesh;
+    const zs_vert *pool = r->priv.verts + base;
+    const uint16_t *idx = m->indices;
+    uint32_t t, n = m->triangle_count, culled = 0;
+    for (t = 0; t < n; t++, idx += 3) {
+        uint32_t i0 = idx[0], i1 = idx[1], i2 = idx[2];
+        int64_t area2 = zs_area2_inline(&pool[i0], &pool[i1], &pool[i2]);
+        if (area2 >= 0) { /* culled before lighting the face */
+            culled++;
+            continue;
+        }
+        count_outcome(&r->stats, zs_setup_triangle(r, (uint16_t)(base + i0),
+                                                   (uint16_t)(base + i1),
+                                                   (uint16_t)(base + i2), area2,
+                                                   face_color(c, t),
+                                                   tag_from_base(tag_base, t)));
+    }
+    r->stats.tris_culled += culled;
+}
+
 zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
 {
     draw_ctx c;
     zs_vert *pool;
     uint32_t i, t, vfit, room, tag0, tag_base;
-    int tag_fast;
+    int tag_fast, inside;
     uint16_t base;
     if (!r || !m)
         return ZS_ERR_NULL;
@@ -462,7 +490,7 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     room = (uint32_t)r->cfg.max_vertices - base;
     vfit = m->vertex_count < room ? m->vertex_count : room;
     r->stats.verts_dropped += m->vertex_count - vfit;
-    transform_vertices(&c, base, vfit);
+    inside = transform_vertices(&c, base, vfit);
     r->priv.n_verts = (uint16_t)(base + vfit);
     r->stats.verts_stored = r->priv.n_verts;
 
@@ -472,6 +500,11 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     tag_base = tag0 % 65535u;
     tag_fast = tag0 <= UINT32_MAX - m->triangle_count; /* and t < 65535: uint16 count */
     r->priv.tag_counter += m->triangle_count;
+    if (inside && vfit == m->vertex_count && tag_fast) {
+        r->stats.tris_submitted += m->triangle_count;
+        setup_inside(&c, base, tag_base);
+        return ZS_OK;
+    }
     for (t = 0; t < m->triangle_count; t++) {
         const uint16_t *idx = m->indices + 3u * t;
         uint32_t i0 = idx[0], i1 = idx[1], i2 = idx[2];

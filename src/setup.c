@@ -93,22 +93,9 @@ uint16_t zs_project_vertex(zs_renderer *r, int64_t xc, int64_t yc, int32_t w, ui
     return (uint16_t)(r->priv.n_verts - 1u);
 }
 
-/* u * v for |u|, |v| < 2^16 (differences of int16 coordinates). Cortex-M0
- * has no 32x32->64 multiply: there v is split at bit 8 so both products fit
- * 32 bits (|u * (v >> 8)| < 2^24, |u * (v & 255)| < 2^24) instead of a
- * helper call. */
-static inline int64_t mul_diff(int32_t u, int32_t v)
-{
-#if defined(__ARM_ARCH_6M__)
-    return (int64_t)(u * zs_asr32(v, 8)) * 256 + u * (v & 255);
-#else
-    return (int64_t)u * v;
-#endif
-}
-
 int64_t zs_area2(const zs_vert *a, const zs_vert *b, const zs_vert *c)
 {
-    return mul_diff(b->x - a->x, c->y - a->y) - mul_diff(c->x - a->x, b->y - a->y);
+    return zs_area2_inline(a, b, c);
 }
 
 static int32_t min3(int32_t a, int32_t b, int32_t c)

@@ -155,6 +155,20 @@ void zs_project(const zs_renderer *r, int64_t xc, int64_t yc, int32_t w, int16_t
                 int16_t *y, uint32_t *z);
 /* Twice the signed screen area (1/256 px^2); < 0 for a front face. */
 int64_t zs_area2(const zs_vert *a, const zs_vert *b, const zs_vert *c);
+/* The same inline (the cull of every triangle): u * v for |u|, |v| < 2^16,
+ * on Cortex-M0 as two 32-bit products (v split at bit 8) instead of a call. */
+static inline int64_t zs_mul_diff(int32_t u, int32_t v)
+{
+#if defined(__ARM_ARCH_6M__)
+    return (int64_t)(u * (v >= 0 ? v >> 8 : ~(~v >> 8))) * 256 + u * (v & 255);
+#else
+    return (int64_t)u * v;
+#endif
+}
+static inline int64_t zs_area2_inline(const zs_vert *a, const zs_vert *b, const zs_vert *c)
+{
+    return zs_mul_diff(b->x - a->x, c->y - a->y) - zs_mul_diff(c->x - a->x, b->y - a->y);
+}
 /* First row whose pixel centre is at or below y (28.4): ceil(y/16 - 0.5). */
 static inline int32_t zs_first_row(int32_t y)
 {

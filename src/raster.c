@@ -195,13 +195,13 @@ static void add_new_edges(zs_renderer *r, int32_t y)
         for (i = 0; i < nb; i++)
             batch[i] = ael[sorted + i];
         i = sorted - 1;
-        j = nb - 1;
         k = n - 1;
-        while (j >= 0) {
-            if (i >= 0 && edges[ael[i]].x > edges[batch[j]].x)
+        for (j = nb - 1; j >= 0; j--) { /* each new edge after the old ones right of it */
+            uint16_t b = batch[j];
+            int32_t bx = edges[b].x;
+            while (i >= 0 && edges[ael[i]].x > bx)
                 ael[k--] = ael[i--];
-            else
-                ael[k--] = batch[j--];
+            ael[k--] = b;
         }
     }
     r->priv.n_ael = (uint16_t)n;

@@ -67,9 +67,9 @@ static int fold_edge(zs_renderer *r, zs_edge *keep, uint16_t keep_i, zs_edge *du
     return 1;
 }
 
-/* Sorts edge indices by column clamped to the screen, by counting (a pass
- * over the row's columns instead of log n passes over the edges): cheaper
- * for more than a few dozen. Edges off either side keep their batch order
+/* Sorts edge indices by column clamped to the screen, by counting over the
+ * columns the batch spans (one pass over them instead of log n passes over
+ * the edges): cheaper than comparison sorts past a dozen or so. Edges off either side keep their batch order
  * among themselves: the walk treats them as at column 0 or at the width, and
  * the next step's insertion pass puts them back in order of their true
  * columns. Counts and output use the sort keys' scratch (8 bytes a column):
@@ -79,27 +79,34 @@ static void count_sort(zs_renderer *r, uint16_t *a, int n)
     const zs_edge *edges = r->priv.edges;
     const int32_t w = (int32_t)r->cfg.width;
     uint16_t *count = (uint16_t *)(void *)r->priv.sort_keys, *out = count + w + 2;
-    int32_t c;
+    int32_t c, lo = w, hi = 0, span;
     int i;
-    memset(count, 0, (size_t)(w + 2) * sizeof *count);
+    /* count over the columns the batch spans only (a small model is narrow) */
+    for (i = 0; i < n; i++) {
+        int32_t x = zs_clampi(edges[a[i]].x, 0, w);
+        lo = x < lo ? x : lo;
+        hi = x > hi ? x : hi;
+    }
+    span = hi - lo + 1;
+    memset(count, 0, (size_t)(span + 1) * sizeof *count);
     for (i = 0; i < n; i++)
-        count[zs_clampi(edges[a[i]].x, 0, w) + 1]++;
-    for (c = 1; c <= w; c++)
+        count[zs_clampi(edges[a[i]].x, 0, w) - lo + 1]++;
+    for (c = 1; c < span; c++)
         count[c] = (uint16_t)(count[c] + count[c - 1]);
     for (i = 0; i < n; i++)
-        out[count[zs_clampi(edges[a[i]].x, 0, w)]++] = a[i];
+        out[count[zs_clampi(edges[a[i]].x, 0, w) - lo]++] = a[i];
     memcpy(a, out, (size_t)n * sizeof *a);
 }
 
-/* Sorts edge indices by column. The keys (column, index) are packed into
- * 32-bit words so the sort never chases pointers; it runs in the z-buffer
- * line, which is idle while edges are added. Insertion sort for a few, a
- * bottom-up merge sort for more (a row can start hundreds of triangles). */
+/* Sorts edge indices by column, in the z-buffer line's storage (idle while
+ * edges are added): insertion on (column, index) keys packed into 32-bit
+ * words for a few, counting for more; without that scratch (ZS_CFG_NO_ZLINE)
+ * insertion on the indices. */
 static void sort_batch(zs_renderer *r, uint16_t *a, int n)
 {
     const zs_edge *edges = r->priv.edges;
-    uint32_t *key = r->priv.sort_keys, *tmp, *src, *dst;
-    int width, i, j;
+    uint32_t *key = r->priv.sort_keys;
+    int i, j;
     if (n < 2)
         return;
     if (!key || n > (int)r->cfg.width) { /* no scratch, or more than it holds */
@@ -112,46 +119,22 @@ static void sort_batch(zs_renderer *r, uint16_t *a, int n)
         }
         return;
     }
-    if (n > 24) {
+    if (n > 16) {
         count_sort(r, a, n);
         return;
     }
-    tmp = key + n;
-    /* columns are within +-2^14 of the screen: an offset makes them unsigned */
+    /* a few: insertion on keys; columns are within +-2^14 of the screen, an
+     * offset makes them unsigned */
     for (i = 0; i < n; i++)
         key[i] = ((uint32_t)(edges[a[i]].x + 32768) << 16) | a[i];
-    if (n <= 16) {
-        for (i = 1; i < n; i++) {
-            uint32_t k = key[i];
-            for (j = i; j > 0 && key[j - 1] > k; j--)
-                key[j] = key[j - 1];
-            key[j] = k;
-        }
-        src = key;
-    } else {
-        src = key;
-        dst = tmp;
-        for (width = 1; width < n; width *= 2) {
-            for (i = 0; i < n; i += 2 * width) {
-                int mid = i + width < n ? i + width : n;
-                int end = i + 2 * width < n ? i + 2 * width : n;
-                int p = i, q = mid, k = i;
-                while (p < mid && q < end)
-                    dst[k++] = src[q] < src[p] ? src[q++] : src[p++];
-                while (p < mid)
-                    dst[k++] = src[p++];
-                while (q < end)
-                    dst[k++] = src[q++];
-            }
-            {
-                uint32_t *t = src;
-                src = dst;
-                dst = t;
-            }
-        }
+    for (i = 1; i < n; i++) {
+        uint32_t k = key[i];
+        for (j = i; j > 0 && key[j - 1] > k; j--)
+            key[j] = key[j - 1];
+        key[j] = k;
     }
     for (i = 0; i < n; i++)
-        a[i] = (uint16_t)(src[i] & 0xFFFFu);
+        a[i] = (uint16_t)(key[i] & 0xFFFFu);
 }
 
 /* Activates the triangles first met on row y; sorts, folds and merges the

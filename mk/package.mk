@@ -1,0 +1,45 @@
+# mk/package.mk: installing the libraries (make install), the pkg-config file, and
+# the packaging tests (a project outside the tree that takes zspan in through
+# zspan.mk, CMake add_subdirectory / FetchContent, find_package and pkg-config;
+# the Arduino library layout). See README.md (Building zspan into your project).
+#
+#   make install [PREFIX=/usr/local] [DESTDIR=]   libzspan.a, libzspan_drivers.a,
+#                 include/zspan/*.h, lib/pkgconfig/zspan.pc (only a C compiler needed)
+#   make uninstall [PREFIX=...] [DESTDIR=]
+#   build/zspan.pc                                the pkg-config file for $(PREFIX)
+#   make test-packaging                           only the packaging checks
+
+DEB_PACKAGES += cmake pkg-config
+
+PREFIX ?= /usr/local
+DESTDIR ?=
+LIBDIR ?= $(PREFIX)/lib
+INCLUDEDIR ?= $(PREFIX)/include
+INSTALL ?= install
+PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
+
+PKG_PC := $(BUILD)/zspan.pc
+PKG_HDRS := $(sort $(wildcard include/zspan/*.h))
+# (mk/panels.mk, included after this file, builds it)
+PKG_DRIVERS_LIB := $(BUILD)/libzspan_drivers.a
+
+.PHONY: install uninstall test-packaging FORCE-PC
+
+# Rewritten when PREFIX (or the version) changes: the recipe compares.
+$(PKG_PC): zspan.pc.in VERSION FORCE-PC
+	@mkdir -p $(@D)
+	@sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@LIBDIR@|$(LIBDIR)|' \
+	    -e 's|@INCLUDEDIR@|$(INCLUDEDIR)|' -e 's|@VERSION@|$(ZSPAN_VERSION)|' $< > $@.tmp
+	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; echo "wrote $@"; fi
+FORCE-PC:
+
+install: $(LIB) $(PKG_DRIVERS_LIB) $(PKG_PC)
+	$(INSTALL) -d $(DESTDIR)$(LIBDIR) $(DESTDIR)$(INCLUDEDIR)/zspan $(DESTDIR)$(PKGCONFIGDIR)
+	$(INSTALL) -m 644 $(LIB) $(PKG_DRIVERS_LIB) $(DESTDIR)$(LIBDIR)/
+	$(INSTALL) -m 644 $(PKG_HDRS) $(DESTDIR)$(INCLUDEDIR)/zspan/
+	$(INSTALL) -m 644 $(PKG_PC) $(DESTDIR)$(PKGCONFIGDIR)/zspan.pc
+
+uninstall:
+	rm -f $(DESTDIR)$(LIBDIR)/libzspan.a $(DESTDIR)$(LIBDIR)/libzspan_drivers.a \
+	    $(DESTDIR)$(PKGCONFIGDIR)/zspan.pc $(addprefix $(DESTDIR)$(INCLUDEDIR)/zspan/,$(notdir $(PKG_HDRS)))
+	-rmdir $(DESTDIR)$(INCLUDEDIR)/zspan

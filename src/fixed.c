@@ -26,8 +26,8 @@ uint32_t zs_recip61(uint32_t d)
      * so no 64-bit division helper is called. */
     uint32_t v = d << 1, vh = v >> 16, vl = v & 0xFFFFu;
     uint32_t qh, ql, r, rem;
-    qh = (1u << 30) / vh; /* 2^62's high word is 2^30, its low word 0 */
-    r = (1u << 30) - qh * vh;
+    qh = ((uint32_t)1 << 30) / vh; /* 2^62's high word is 2^30, its low word 0 */
+    r = ((uint32_t)1 << 30) - qh * vh;
     while (qh > 0xFFFFu || qh * vl > (r << 16)) {
         qh--;
         r += vh;

@@ -7,6 +7,8 @@
  * Output, one line per frame (FNV-1a 32 over every row's bytes, as the bench):
  *
  *   R BOARD small SHADE MODE FRAME sum=XXXXXXXX records=N
+ *   K BOARD big_arena=N init=STATUS         (the largest configuration's arena size
+ *                                            and what zs_init says of it)
  *   M BOARD arena=N static=N stack=N        (memory, from the port)
  *
  * Runs every shading (flat lit, Gouraud lit with fog) in both visibility modes
@@ -28,10 +30,12 @@
 #define SMALL_W 160
 #define SMALL_H 128
 /* Pools: the largest use over 360 degrees of the animation on the host, with
- * a margin (records 25, vertices 30, edges 24 at 36 frames of 10 degrees). */
-#define SMALL_TRIS 40
-#define SMALL_VERTS 48
-#define SMALL_EDGES 40
+ * a margin (22 records, 30 vertices, 32 edge sides over 40 frames of 9 degrees). */
+#ifndef SMALL_TRIS
+#define SMALL_TRIS 28
+#define SMALL_VERTS 36
+#define SMALL_EDGES 36
+#endif
 
 /* Corner i: x = bit 0, y = bit 1, z = bit 2 (set = +1). */
 static const int16_t cube_pos[8 * 3] = {
@@ -134,6 +138,14 @@ int main(void)
     int shade, mode, f, errors = 0;
 
     small_port_init();
+    {
+        /* the largest configuration: on a 16-bit size_t its arena cannot be
+         * addressed, so zs_arena_bytes gives 0 and zs_init refuses it */
+        zs_config big = zs_config_default(ZS_MAX_DIM, ZS_MAX_DIM, ZS_MAX_TRIANGLES,
+                                          ZS_MAX_VERTICES, ZS_MAX_ACTIVE_EDGES);
+        printf("K %s big_arena=%lu init=%d\n", SMALL_BOARD, (unsigned long)zs_arena_bytes(&big),
+               (int)zs_init(&r, arena, sizeof arena, &big));
+    }
     if (zs_init(&r, arena, sizeof arena, &cfg) != ZS_OK || zs_camera_set_view(&cam, &view) ||
         zs_camera_perspective(&cam, ZS_FX(50), ZS_FX_RATIO(1, 10), ZS_FX(20))) {
         printf("E %s init\n", SMALL_BOARD);
@@ -156,13 +168,14 @@ int main(void)
                 }
                 small_mark(2);
                 if (st != ZS_OK) {
-                    printf("E %s %d %d %d %s\n", SMALL_BOARD, shade, mode, f, zs_strerror(st));
+                    printf("E %s %d %d %d status %d\n", SMALL_BOARD, shade, mode, f, (int)st);
                     errors++;
                     continue;
                 }
-                printf("R %s small %s %s %d sum=%08lx records=%lu dropped=%lu\n", SMALL_BOARD,
-                       shade ? "gouraud" : "flat", mode ? "zline" : "span", f,
+                printf("R %s small %s %s %d sum=%08lx records=%lu verts=%lu edges=%lu dropped=%lu\n",
+                       SMALL_BOARD, shade ? "gouraud" : "flat", mode ? "zline" : "span", f,
                        (unsigned long)sum, (unsigned long)r.stats.records,
+                       (unsigned long)r.stats.verts_stored, (unsigned long)r.stats.max_active_edges,
                        (unsigned long)(r.stats.tris_dropped + r.stats.verts_dropped +
                                        r.stats.records_skipped));
             }

@@ -33,6 +33,8 @@ ZSPAN_CFLAGS := $(ZSPAN_INCLUDES) $(ZSPAN_REQUIRED_CFLAGS)
 ZSPAN_VERSION := $(strip $(file < $(ZSPAN_DIR)/VERSION))
 
 ifneq ($(strip $(ZSPAN_BUILD)),)
+# These rules must not become the including Makefile's default goal.
+zspan_saved_goal := $(.DEFAULT_GOAL)
 ZSPAN_LIB := $(ZSPAN_BUILD)/libzspan.a
 ZSPAN_DRIVERS_LIB := $(ZSPAN_BUILD)/libzspan_drivers.a
 ZSPAN_CORE_OBJS := $(patsubst $(ZSPAN_DIR)/src/%.c,$(ZSPAN_BUILD)/zspan/core/%.o,$(ZSPAN_CORE_SRCS))
@@ -51,4 +53,5 @@ $(ZSPAN_LIB): $(ZSPAN_CORE_OBJS)
 $(ZSPAN_DRIVERS_LIB): $(ZSPAN_DRIVER_OBJS)
 	@rm -f $@
 	$(AR) rcs $@ $^
+.DEFAULT_GOAL := $(zspan_saved_goal)
 endif

@@ -43,3 +43,21 @@ uninstall:
 	rm -f $(DESTDIR)$(LIBDIR)/libzspan.a $(DESTDIR)$(LIBDIR)/libzspan_drivers.a \
 	    $(DESTDIR)$(PKGCONFIGDIR)/zspan.pc $(addprefix $(DESTDIR)$(INCLUDEDIR)/zspan/,$(notdir $(PKG_HDRS)))
 	-rmdir $(DESTDIR)$(INCLUDEDIR)/zspan
+
+# --- the example and the packaging checks ---------------------------------------
+PKG_EXAMPLE := $(BUILD)/examples/host-ppm
+PKG_WAYS := make subdirectory fetchcontent package pkgconfig
+PKG_CHECKS := $(addprefix check-package-,$(PKG_WAYS))
+ALL_TARGETS += $(PKG_EXAMPLE)
+TEST_TARGETS += $(PKG_CHECKS)
+.PHONY: $(PKG_CHECKS)
+
+# The smallest complete program: one frame to a PPM, no dependency but libc.
+$(PKG_EXAMPLE): examples/host-ppm/main.c $(LIB)
+	@mkdir -p $(@D)
+	$(CC) -std=c99 -Wall -Wextra -Werror -Wconversion -pedantic -O2 -Iinclude -o $@ $< $(LIB)
+
+$(PKG_CHECKS): check-package-%: $(PKG_EXAMPLE) | deps
+	@bash tests/packaging/run_external.sh $* $(PKG_EXAMPLE)
+
+test-packaging: $(PKG_CHECKS)

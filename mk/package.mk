@@ -61,3 +61,34 @@ $(PKG_CHECKS): check-package-%: $(PKG_EXAMPLE) | deps
 	@bash tests/packaging/run_external.sh $* $(PKG_EXAMPLE)
 
 test-packaging: $(PKG_CHECKS)
+
+# --- the Arduino library ----------------------------------------------------------
+# The library specification's layout (1.5 format): library.properties, src/ compiled
+# recursively with src/ on the include path, examples/NAME/NAME.ino (mk/arduino_lib.sh).
+# The core needs -fno-strict-aliasing, which a library cannot pass to the Arduino
+# build: each source gets the same setting as a pragma on its first line.
+ARDUINO_STAGE := $(BUILD)/arduino
+ARDUINO_LIB := $(ARDUINO_STAGE)/zspan
+ARDUINO_ZIP := $(ARDUINO_STAGE)/zspan-$(ZSPAN_VERSION).zip
+ARDUINO_EXAMPLES := $(sort $(wildcard examples/arduino/*/*.ino))
+ARDUINO_INPUTS := library.properties VERSION $(CORE_SRCS) $(wildcard src/*.h) \
+                  $(wildcard drivers/*.c drivers/*.h) $(PKG_HDRS) $(ARDUINO_EXAMPLES)
+.PHONY: arduino-lib arduino-zip check-arduino
+arduino-lib: $(ARDUINO_LIB)/library.properties
+arduino-zip: $(ARDUINO_ZIP)
+
+$(ARDUINO_LIB)/library.properties: $(ARDUINO_INPUTS) mk/arduino_lib.sh
+	bash mk/arduino_lib.sh -o $@ $(CORE_REQUIRED_FLAGS)
+
+$(ARDUINO_ZIP): $(ARDUINO_LIB)/library.properties
+	rm -f $@
+	cd $(ARDUINO_STAGE) && python3 -c 'import shutil; shutil.make_archive("zspan-$(ZSPAN_VERSION)", "zip", ".", "zspan")'
+
+# The layout rules, library.json, and every example compiled with Debian's
+# arduino-builder for an ATmega2560 board (one check).
+ARDUINO_FQBN := arduino:avr:mega:cpu=atmega2560
+check-arduino: $(ARDUINO_LIB)/library.properties | deps
+	@ARDUINO_FQBN=$(ARDUINO_FQBN) ZSPAN_VERSION=$(ZSPAN_VERSION) \
+	    bash tests/packaging/check_arduino.sh $(ARDUINO_LIB) $(ARDUINO_STAGE)/work
+TEST_TARGETS += check-arduino
+DEB_PACKAGES += arduino-builder arduino-core-avr python3

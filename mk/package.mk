@@ -92,3 +92,30 @@ check-arduino: $(ARDUINO_LIB)/library.properties | deps
 	    bash tests/packaging/check_arduino.sh $(ARDUINO_LIB) $(ARDUINO_STAGE)/work
 TEST_TARGETS += check-arduino
 DEB_PACKAGES += arduino-builder arduino-core-avr python3
+
+# --- the Linux SPI and USB examples (on the ports of ports/linux and ports/mcp2210) ---
+PKG_EX_LINUX := $(BUILD)/examples/example-linux-spidev
+PKG_EX_MCP := $(BUILD)/examples/example-mcp2210-usb
+ALL_TARGETS += $(PKG_EX_LINUX) $(PKG_EX_MCP)
+PKG_EX_CFLAGS = -std=c99 -Wall -Wextra -Werror -O2 -Iinclude $(PORTS_GPIOD_DEFS)
+$(PKG_EX_LINUX): examples/linux-spidev/main.c ports/linux/linux_bus.c ports/linux/gpio.c \
+                 ports/linux/zs_linux.h $(PKG_DRIVERS_LIB) $(LIB) | deps
+	@mkdir -p $(@D)
+	$(CC) $(PKG_EX_CFLAGS) -Iports/linux $$($(PKG_CONFIG) --cflags libgpiod) -o $@ $(filter %.c,$^) \
+	    $(PKG_DRIVERS_LIB) $(LIB) $$($(PKG_CONFIG) --libs libgpiod || echo -lgpiod)
+$(PKG_EX_MCP): examples/mcp2210-usb/main.c ports/mcp2210/mcp2210.c ports/mcp2210/mcp2210_hidapi.c \
+               ports/mcp2210/zs_mcp2210.h $(PKG_DRIVERS_LIB) $(LIB) | deps
+	@mkdir -p $(@D)
+	$(CC) $(PKG_EX_CFLAGS) -Iports/mcp2210 $$($(PKG_CONFIG) --cflags hidapi-hidraw) -o $@ \
+	    $(filter %.c,$^) $(PKG_DRIVERS_LIB) $(LIB) \
+	    $$($(PKG_CONFIG) --libs hidapi-hidraw || echo -lhidapi-hidraw)
+
+# Each example starts and reports the missing device as an error (status 1), not a crash.
+check-examples: $(PKG_EX_LINUX) $(PKG_EX_MCP) $(PKG_EXAMPLE)
+	@out=$$($(PKG_EX_LINUX) /dev/zspan-no-such-spidev gpiochip-none 25 27 2>&1); rc=$$?; \
+	    echo "check-examples: example-linux-spidev: $$out (status $$rc)"; test $$rc -eq 1 || exit 1; \
+	    out=$$($(PKG_EX_MCP) /dev/zspan-no-such-hidraw 2>&1); rc=$$?; \
+	    echo "check-examples: example-mcp2210-usb: $$out (status $$rc)"; test $$rc -eq 1 || exit 1; \
+	    out=$$($(PKG_EX_LINUX) 2>&1); rc=$$?; test $$rc -eq 2 || { echo "usage: status $$rc"; exit 1; }
+TEST_TARGETS += check-examples
+.PHONY: check-examples

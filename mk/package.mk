@@ -119,3 +119,10 @@ check-examples: $(PKG_EX_LINUX) $(PKG_EX_MCP) $(PKG_EXAMPLE)
 	    out=$$($(PKG_EX_LINUX) 2>&1); rc=$$?; test $$rc -eq 2 || { echo "usage: status $$rc"; exit 1; }
 TEST_TARGETS += check-examples
 .PHONY: check-examples
+
+# --- the metadata files (ESP-IDF, Zephyr, PlatformIO, Arduino) agree with VERSION -------
+check-package-metadata: $(PKG_PC) | deps
+	@bash tests/packaging/check_metadata.sh
+TEST_TARGETS += check-package-metadata
+DEB_PACKAGES += python3-yaml
+.PHONY: check-package-metadata

@@ -216,6 +216,10 @@ test: programs $(CORE_TEST_BINS) $(TEST_SUITES) | deps
 	    $(TEST_SUITES) \
 	    $(addprefix make:,$(TEST_TARGETS))
 
+# The suites link libraries `programs` builds (an mk file included before the one
+# defining a library's variable would otherwise miss it as a prerequisite).
+$(CORE_TEST_BINS) $(TEST_SUITES): | programs
+
 $(BUILD)/m0/%.o: src/%.c | deps
 	@mkdir -p $(@D)
 	$(ARM_CC) $(M0_CFLAGS) -MMD -MP -c $< -o $@

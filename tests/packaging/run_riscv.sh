@@ -57,7 +57,7 @@ awk -v text="$text" '
     function kv(line, k,   i, a, n) { n = split(line, a, " "); for (i = 1; i <= n; i++)
         if (index(a[i], k "=") == 1) return substr(a[i], length(k) + 2); return "" }
     /^A / { arena[$3] = kv($0, "arena"); timing[$3] = kv($0, "timing") }
-    /^S / { skip[$3] = kv($0, "need") }
+    /^S / { skip[++ns] = $3; need[ns] = kv($0, "need") }
     /^M / { st = kv($0, "static_ram"); sk = kv($0, "stack_used"); ss = kv($0, "stack_size") }
     /^I / { free = kv($0, "free_ram") }
     /^R / { k = $3 SUBSEP $4; i = kv($0, "instr") + 0; tot[k] += i; cnt[k]++
@@ -74,7 +74,7 @@ awk -v text="$text" '
         print "| ----- | ---- | -----: | ----------------------------: | --: | ----: |"
         for (j = 1; j <= no; j++) { k = ks[j]; split(k, p, SUBSEP)
             printf "| %s | %s | %d | %.3f M | %.3f M | %d B |\n", p[1], p[2], cnt[k], tot[k] / cnt[k] / 1e6, mx[k] / 1e6, arena[p[1]] }
-        for (s in skip) printf "| %s | - | 0 | does not fit: arena %d B > %d B free | | |\n", s, skip[s], free
+        for (j = 1; j <= ns; j++) printf "| %s | - | 0 | does not fit: arena %d B > %d B free | | |\n", skip[j], need[j], free
         print ""
         printf "RAM: .data + .bss %d B (renderer state, line buffer), stack high-water %d B of %d B, %d B free for the arena. Core .text (src/*.c, RV32IMC -O2): %d B.\n", st, sk, ss, free, text
     }' "$work/rv.txt" > "$out"

@@ -10,7 +10,8 @@
 # The Arduino build takes no per-library compiler flags, so each FLAG the sources
 # need (-fno-strict-aliasing, from CORE_REQUIRED_FLAGS) becomes a
 # `#pragma GCC optimize` line at the top of every source; `#line 1` keeps the
-# compiler's line numbers those of the tree.
+# compiler's line numbers those of the tree. (gcc-avr 5.4 ignores the pragma: on AVR
+# the user adds compiler.c.extra_flags=-fno-strict-aliasing; README.md, Arduino.)
 set -eu
 [ "$1" = -o ] || { echo "usage: $0 -o LIB/library.properties FLAG..." >&2; exit 2; }
 out=$2

@@ -7,6 +7,7 @@
  * The ST7789 is a 3.3 V part: use a level shifter on a 5 V board.
  * Modules without a CS pin need SPI_MODE3. About 3 KB of RAM (a Mega 2560 or
  * any board with more); for an ILI9341 use zs_panel_ili9341 and W, H 240, 320.
+ * On AVR build with compiler.c.extra_flags=-fno-strict-aliasing (README: Arduino).
  */
 #include <SPI.h>
 #include <zspan.h>

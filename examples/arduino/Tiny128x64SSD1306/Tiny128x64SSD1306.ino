@@ -7,6 +7,7 @@
  *
  * Wiring: SDA and SCL on the board's I2C pins (Mega 2560: 20, 21; Uno: A4, A5),
  * VCC and GND; address 0x3C (some modules: 0x3D).
+ * On AVR build with compiler.c.extra_flags=-fno-strict-aliasing (README: Arduino).
  */
 #include <Wire.h>
 #include <zspan.h>

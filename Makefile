@@ -216,9 +216,9 @@ test: programs $(CORE_TEST_BINS) $(TEST_SUITES) | deps
 	    $(TEST_SUITES) \
 	    $(addprefix make:,$(TEST_TARGETS))
 
-# The suites link libraries `programs` builds (an mk file included before the one
-# defining a library's variable would otherwise miss it as a prerequisite).
-$(CORE_TEST_BINS) $(TEST_SUITES): | programs
+# The suites link the libraries (mk/app.mk names the driver libraries before
+# mk/panels.mk defines their variables, so it misses them as prerequisites).
+$(TEST_SUITES): | $(ALL_LIBS) $(ASAN_LIB) $(PANELS_ASAN_LIB)
 
 $(BUILD)/m0/%.o: src/%.c | deps
 	@mkdir -p $(@D)

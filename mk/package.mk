@@ -87,8 +87,30 @@ $(ARDUINO_ZIP): $(ARDUINO_LIB)/library.properties
 # The layout rules, library.json, and every example compiled with Debian's
 # arduino-builder for an ATmega2560 board (one check).
 ARDUINO_FQBN := arduino:avr:mega:cpu=atmega2560
-check-arduino: $(ARDUINO_LIB)/library.properties | deps
-	@ARDUINO_FQBN=$(ARDUINO_FQBN) ZSPAN_VERSION=$(ZSPAN_VERSION) \
+# Then the ST7789 example's Mega 2560 image runs under simavr with an emulated ST7789 on
+# its pins (tests/packaging/avr_st7789.c); its first frame must equal, pixel for pixel,
+# the same sketch built for the host against a small Arduino stand-in
+# (tests/packaging/arduino_host/) driving the same emulated panel.
+ARDUINO_AVR_PANEL := $(ARDUINO_STAGE)/avr_st7789
+ARDUINO_HOST_CUBE := $(ARDUINO_STAGE)/host-SpinningCubeST7789
+ARDUINO_EMU := host_sim/emu/emu.c tests/ports/png_stub.c
+$(ARDUINO_AVR_PANEL): tests/packaging/avr_st7789.c $(ARDUINO_EMU) host_sim/emu/emu.h | deps
+	@mkdir -p $(@D)
+	$(CC) -std=gnu99 -Wall -Wextra -Werror -O2 $$($(PKG_CONFIG) --cflags simavr) -Ihost_sim/emu \
+	    -o $@ $(filter %.c,$^) $$($(PKG_CONFIG) --libs simavr || echo -lsimavr) -lelf -lm
+$(ARDUINO_HOST_CUBE): examples/arduino/SpinningCubeST7789/SpinningCubeST7789.ino \
+                      tests/packaging/arduino_host/host_main.cpp $(wildcard tests/packaging/arduino_host/*.h) \
+                      $(ARDUINO_EMU) $(ARDUINO_LIB)/library.properties $(PKG_DRIVERS_LIB) $(LIB) | deps
+	@mkdir -p $(@D)/host-obj
+	$(CC) -std=c99 -O2 -Ihost_sim/emu -c host_sim/emu/emu.c -o $(@D)/host-obj/emu.o
+	$(CC) -std=c99 -O2 -Ihost_sim/emu -c tests/ports/png_stub.c -o $(@D)/host-obj/png_stub.o
+	$(CXX) -std=gnu++11 -Wall -Wextra -Werror -O2 -I$(ARDUINO_LIB)/src -Itests/packaging/arduino_host \
+	    -Ihost_sim/emu -include Arduino.h -x c++ $< -x none tests/packaging/arduino_host/host_main.cpp \
+	    $(@D)/host-obj/emu.o $(@D)/host-obj/png_stub.o $(PKG_DRIVERS_LIB) $(LIB) -o $@
+
+check-arduino: $(ARDUINO_LIB)/library.properties $(ARDUINO_AVR_PANEL) $(ARDUINO_HOST_CUBE) | deps
+	@ARDUINO_FQBN=$(ARDUINO_FQBN) ZSPAN_VERSION=$(ZSPAN_VERSION) AVR_ST7789=$(ARDUINO_AVR_PANEL) \
+	    HOST_CUBE=$(ARDUINO_HOST_CUBE) \
 	    bash tests/packaging/check_arduino.sh $(ARDUINO_LIB) $(ARDUINO_STAGE)/work
 TEST_TARGETS += check-arduino
 DEB_PACKAGES += arduino-builder arduino-core-avr python3

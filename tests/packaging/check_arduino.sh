@@ -4,7 +4,9 @@
 # compiles with Debian's arduino-builder for an ATmega2560 board.
 #
 #   check_arduino.sh LIB WORK     (make check-arduino; LIB from make arduino-lib)
-# Environment: ARDUINO_FQBN, ZSPAN_VERSION.
+# Then runs SpinningCubeST7789's image under simavr on an emulated ST7789 (AVR_ST7789)
+# and compares its first frame with the same sketch built for the host (HOST_CUBE).
+# Environment: ARDUINO_FQBN, ZSPAN_VERSION, AVR_ST7789, HOST_CUBE.
 set -u
 lib=$(realpath -m "$1") work=$(realpath -m "$2")
 bad=0
@@ -104,4 +106,21 @@ for d in "$lib"/examples/*/; do
         err "$n does not compile for $ARDUINO_FQBN"
     fi
 done
+
+# --- run the ST7789 example: AVR under simavr vs the host ------------------------------
+elf=$work/build-SpinningCubeST7789/SpinningCubeST7789.ino.elf
+if [ -f "$elf" ]; then
+    if timeout 600 "$AVR_ST7789" "$elf" "$work/avr.rgb" > "$work/avr_st7789.log" 2>&1 &&
+       "$HOST_CUBE" "$work/host.rgb" > "$work/host_cube.log" 2>&1; then
+        if cmp -s "$work/avr.rgb" "$work/host.rgb" &&
+           [ "$(od -An -v -tx1 -w3 "$work/host.rgb" | sort -u | wc -l)" -gt 100 ]; then
+            ok "SpinningCubeST7789 on an ATmega2560 (simavr) -> emulated ST7789: first frame == the host build's ($(grep -o '[0-9]* cycles' "$work/avr_st7789.log"))"
+        else
+            err "SpinningCubeST7789: the AVR's frame differs from the host's (or is blank): $work/*.rgb"
+        fi
+    else
+        cat "$work/avr_st7789.log" "$work/host_cube.log"
+        err "SpinningCubeST7789: no clean frame on the emulated panel"
+    fi
+fi
 exit $bad

@@ -39,7 +39,7 @@ static zs_renderer renderer;
 static zs_panel lcd;
 static zs_bus bus;
 static zs_camera cam;
-static uint16_t frame;
+static uint16_t frame = 24; /* a corner view from the first frame */
 
 /* The bus for the panel driver: commands with DC low, then parameters and pixels
  * with DC high; blocking writes. */
@@ -109,7 +109,7 @@ void setup()
 
 void loop()
 {
-    zs_mesh cube = {cube_pos, cube_idx, NULL, cube_colors, NULL, NULL, ZS_FX_RATIO(8, 10), 8, 12, 0};
+    zs_mesh cube = {cube_pos, cube_idx, NULL, cube_colors, NULL, NULL, ZS_FX_RATIO(6, 10), 8, 12, 0};
     zs_shade_params look = zs_shade_default();
     look.shading = ZS_SHADE_GOURAUD;
     look.format = lcd.format;

@@ -113,7 +113,7 @@ check-arduino: $(ARDUINO_LIB)/library.properties $(ARDUINO_AVR_PANEL) $(ARDUINO_
 	    HOST_CUBE=$(ARDUINO_HOST_CUBE) \
 	    bash tests/packaging/check_arduino.sh $(ARDUINO_LIB) $(ARDUINO_STAGE)/work
 TEST_TARGETS += check-arduino
-DEB_PACKAGES += arduino-builder arduino-core-avr python3
+DEB_PACKAGES += arduino-builder arduino-core-avr python3 simavr libsimavr-dev libelf-dev
 
 # --- the Linux SPI and USB examples (on the ports of ports/linux and ports/mcp2210) ---
 PKG_EX_LINUX := $(BUILD)/examples/example-linux-spidev

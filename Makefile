@@ -1,7 +1,10 @@
 # zspan top-level Makefile (GNU make). See docs/BUILD-CONTRACT.md.
 #
-#   make          build/libzspan.a, build/asan/libzspan.a, build/zspan-sim, $(ALL_TARGETS)
-#   make test     everything, then core tests, check-core, check-core-flags, $(TEST_SUITES),
+#   make          build/libzspan.a and build/libzspan_drivers.a with only a C compiler (installs
+#                 nothing); also `programs` when every package of $(DEB_PACKAGES) is installed
+#   make programs build/asan/libzspan.a, build/zspan-sim, $(ALL_TARGETS)
+#   make install  the libraries, headers, zspan.pc into $(DESTDIR)$(PREFIX) (mk/package.mk)
+#   make test     programs, then core tests, check-core, check-core-flags, $(TEST_SUITES),
 #                 $(TEST_TARGETS);
 #                 ends with one line "N passed, N failed"
 #   make demo     renders the built-in scene to out/demo.png, then $(DEMO_TARGETS)
@@ -48,7 +51,9 @@ CORE_SRCS := $(sort $(wildcard src/*.c))
 # keeps its own record types in the caller's arena whatever type the caller
 # declared it with (include/zspan/zspan.h, zs_init). `make check-core-flags`
 # (part of make test) fails if a rule of the Makefile or mk/*.mk lacks them.
-CORE_REQUIRED_FLAGS := -fno-strict-aliasing
+# The same list a user's Makefile gets from zspan.mk (ZSPAN_REQUIRED_CFLAGS).
+include zspan.mk
+CORE_REQUIRED_FLAGS := $(ZSPAN_REQUIRED_CFLAGS)
 CORE_WARN := -std=c99 -Wall -Wextra -Werror -Wconversion -ffreestanding $(CORE_REQUIRED_FLAGS)
 CORE_CFLAGS := $(CORE_WARN) -O2 -Iinclude
 ASAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all
@@ -104,10 +109,25 @@ CORE_TEST_CFLAGS = $(TEST_CFLAGS) -DZT_TOP_DIR='"$(CURDIR)"' \
                    $(shell $(PKG_CONFIG) --cflags assimp libpng 2>/dev/null)
 CORE_TEST_LIBS = $(shell $(PKG_CONFIG) --libs assimp libpng 2>/dev/null) $(TEST_LIBS)
 
-.PHONY: all deps test test-core check-core check-core-flags demo bench clean core-present \
+.PHONY: all programs deps test test-core check-core check-core-flags demo bench clean core-present \
         $(TEST_TARGETS) $(DEMO_TARGETS) $(BENCH_TARGETS)
 
-all: $(LIB) $(ASAN_LIB) $(SIM) $(ALL_TARGETS) | deps
+# Plain `make` needs only a C compiler and installs nothing: the core and the
+# panel drivers (both freestanding). The host programs, sanitizer builds and
+# firmware images need Debian packages: `make programs` (after `make deps`);
+# plain `make` builds them too when every package is already installed.
+ALL_LIBS := $(LIB) $(PANELS_LIB)
+DEB_INSTALLED := $(shell dpkg-query -W -f='$${db:Status-Abbrev}|$${Package}\n' \
+                   $(sort $(DEB_PACKAGES)) 2>/dev/null | sed -n 's/^ii.|//p')
+DEB_MISSING := $(filter-out $(DEB_INSTALLED),$(sort $(DEB_PACKAGES)))
+HAVE_ALL_PACKAGES := $(if $(DEB_INSTALLED),$(if $(DEB_MISSING),,y))
+
+all: $(ALL_LIBS) $(if $(HAVE_ALL_PACKAGES),programs)
+ifeq ($(HAVE_ALL_PACKAGES),)
+	@echo "make: built $(ALL_LIBS) only; 'make deps' (as root) then 'make programs' builds the rest"
+endif
+
+programs: $(ALL_LIBS) $(ASAN_LIB) $(SIM) $(ALL_TARGETS) | deps
 
 # ---------------------------------------------------------------------------
 # deps: install missing Debian packages (root) or list them (non-root).
@@ -140,7 +160,7 @@ core-present:
 # ---------------------------------------------------------------------------
 # Libraries
 # ---------------------------------------------------------------------------
-$(BUILD)/obj/%.o: src/%.c | deps
+$(BUILD)/obj/%.o: src/%.c
 	@mkdir -p $(@D)
 	$(CC) $(CORE_CFLAGS) -MMD -MP -c $< -o $@
 
@@ -191,10 +211,14 @@ test-core: $(CORE_TEST_BINS) | deps
 
 # Runs, in order: the core suites, check-core, check-core-flags, the TEST_SUITES of mk/*.mk, then
 # each of TEST_TARGETS; keeps going after a failure; the last line is the total.
-test: all $(CORE_TEST_BINS) $(TEST_SUITES) | deps
+test: programs $(CORE_TEST_BINS) $(TEST_SUITES) | deps
 	@MAKE='$(MAKE)' $(SUITE_RUNNER) $(CORE_TEST_BINS) make:check-core make:check-core-flags \
 	    $(TEST_SUITES) \
 	    $(addprefix make:,$(TEST_TARGETS))
+
+# The suites link the libraries (mk/app.mk names the driver libraries before
+# mk/panels.mk defines their variables, so it misses them as prerequisites).
+$(TEST_SUITES): | $(ALL_LIBS) $(ASAN_LIB) $(PANELS_ASAN_LIB)
 
 $(BUILD)/m0/%.o: src/%.c | deps
 	@mkdir -p $(@D)
@@ -211,14 +235,14 @@ check-core-flags: | core-present
 # ---------------------------------------------------------------------------
 # Demo and benchmarks
 # ---------------------------------------------------------------------------
-demo: all | deps
+demo: programs | deps
 	@mkdir -p $(OUT)
 	$(SIM) demo --out $(OUT)/demo.png
 ifneq ($(strip $(DEMO_TARGETS)),)
 	@$(MAKE) --no-print-directory $(DEMO_TARGETS)
 endif
 
-bench: all | deps
+bench: programs | deps
 ifneq ($(strip $(BENCH_TARGETS)),)
 	@$(MAKE) --no-print-directory $(BENCH_TARGETS)
 else

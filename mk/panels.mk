@@ -43,7 +43,7 @@ SIM_EXTRA_SRCS += $(PANELS_DRV_SRCS) $(PANELS_EMU_SRCS)
 SIM_EXTRA_LIBS += -lSDL2
 
 # --- driver libraries ------------------------------------------------------
-$(BUILD)/drivers/obj/%.o: drivers/%.c $(PANELS_DRV_HDRS) | deps
+$(BUILD)/drivers/obj/%.o: drivers/%.c $(PANELS_DRV_HDRS)
 	@mkdir -p $(@D)
 	$(CC) $(CORE_CFLAGS) -MMD -MP -c $< -o $@
 

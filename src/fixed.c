@@ -49,7 +49,7 @@ uint32_t zs_udiv64_32(uint32_t nh, uint32_t nl, uint32_t v)
 
 uint32_t zs_recip61(uint32_t d)
 {
-    return zs_udiv64_32(1u << 30, 0u, d << 1); /* 2^62 / 2d */
+    return zs_udiv64_32((uint32_t)1 << 30, 0u, d << 1); /* 2^62 / 2d */
 }
 
 void zs_recip_init(zs_recip *rc, int64_t d)

@@ -29,10 +29,36 @@ static zs_status check_config(const zs_config *c)
     return ZS_OK;
 }
 
+#if SIZE_MAX < 0xFFFFFFFFu
+/* ZS_ARENA_BYTES_CFG in 32 bits: with a 16-bit size_t (AVR) the figure of a
+ * large configuration would wrap to a small one. */
+#define ROUND8_32(n) (((uint32_t)(n) + 7u) & ~(uint32_t)7u)
+static uint32_t arena_bytes32(const zs_config *c)
+{
+    uint32_t e = c->max_active_edges, a = e / 2u, n;
+    int flat = (c->flags & ZS_CFG_FLAT_ONLY) != 0;
+    n = ROUND8_32((uint32_t)c->max_vertices * ZS_VERTEX_BYTES) +
+        (flat ? 0u : ROUND8_32((uint32_t)c->max_vertices * ZS_VERTEX_SHADE_BYTES)) +
+        ROUND8_32((uint32_t)c->max_triangles * ZS_TRIANGLE_BYTES) +
+        ROUND8_32((uint32_t)c->height * 2u) + ROUND8_32(e * ZS_EDGE_BYTES) +
+        2u * ROUND8_32(e * 2u) + ROUND8_32(a * ZS_ACTIVE_BYTES) +
+        (flat ? 0u : ROUND8_32(a * ZS_ACTIVE_COLOR_BYTES)) + 2u * ROUND8_32(a * 2u) +
+        ((c->flags & ZS_CFG_NO_ZLINE)
+             ? 0u
+             : ROUND8_32((uint32_t)c->width * 8u) + ROUND8_32((uint32_t)c->width * 2u)) +
+        ZS_ARENA_ALIGN;
+    return n;
+}
+#endif
+
 size_t zs_arena_bytes(const zs_config *cfg)
 {
     if (check_config(cfg) != ZS_OK)
         return 0;
+#if SIZE_MAX < 0xFFFFFFFFu
+    if (arena_bytes32(cfg) > SIZE_MAX)
+        return 0; /* more than the address space: reported as a capacity error */
+#endif
     return ZS_ARENA_BYTES_CFG(cfg->width, cfg->height, cfg->max_triangles, cfg->max_vertices,
                               cfg->max_active_edges, cfg->flags);
 }
@@ -65,6 +91,8 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
     if (st != ZS_OK)
         return st;
     need = zs_arena_bytes(cfg);
+    if (need == 0)
+        return ZS_ERR_CAPACITY; /* the arena would not fit the address space */
     if (arena_size < need)
         return ZS_ERR_ARENA_SMALL;
     memset(r, 0, sizeof *r);

@@ -10,8 +10,10 @@
 /* Number of left shifts that bring 0 < v < 2^31 into [2^30, 2^31). */
 static unsigned norm_shift(uint32_t v)
 {
-#if defined(__GNUC__)
+#if defined(__GNUC__) && __SIZEOF_INT__ == 4
     return (unsigned)__builtin_clz(v) - 1u;
+#elif defined(__GNUC__) && __SIZEOF_LONG__ == 4 /* 16-bit int (AVR): clz of a long */
+    return (unsigned)__builtin_clzl(v) - 1u;
 #else
     unsigned s = 0;
     while (v < 0x40000000u) {

@@ -190,7 +190,9 @@ typedef struct zs_config {
 zs_config zs_config_default(uint16_t width, uint16_t height, uint16_t max_triangles,
                             uint16_t max_vertices, uint16_t max_active_edges);
 /* All features (flags 0). */
-/* The same figure as ZS_ARENA_BYTES_CFG, at run time (0 for an invalid config). */
+/* The same figure as ZS_ARENA_BYTES_CFG, at run time (0 for an invalid config,
+ * and where size_t is 16 bits (AVR) for one whose arena would not fit it:
+ * zs_init then says ZS_ERR_CAPACITY). */
 size_t zs_arena_bytes(const zs_config *cfg);
 
 /* ------------------------------------------------------------------ */

@@ -24,8 +24,6 @@ static unsigned norm_shift(uint32_t v)
 #endif
 }
 
-/* floor(v * inv / 2^sh) for |v| * inv < 2^64: the magnitude is formed
- * unsigned, as |v| may reach guard * w and the product 2^63. */
 /* |v| * inv for inv < 2^32 and a product below 2^64 (so the high word of
  * |v| times inv fits 32 bits). */
 static uint64_t mag_mul(uint64_t m, uint32_t inv)
@@ -34,6 +32,8 @@ static uint64_t mag_mul(uint64_t m, uint32_t inv)
            ((uint64_t)((uint32_t)(m >> 32) * inv) << 32);
 }
 
+/* floor(v * inv / 2^sh) for |v| * inv < 2^64: the magnitude is formed
+ * unsigned, as |v| may reach guard * w and the product 2^63. */
 static int64_t mul_floor_shift(int64_t v, uint32_t inv, unsigned sh)
 {
     if (v >= 0)

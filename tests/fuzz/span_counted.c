@@ -27,6 +27,6 @@ __attribute__((weak)) void fuzz_span_fill(const uint8_t *row, int x0, int x1)
 
 #define zs_fill_flat(row, x0, x1, bpp, pixel)                                         \
     (fuzz_span_fill((row), (x0), (x1)), zs_fill_flat((row), (x0), (x1), (bpp), (pixel)))
-#define zs_fill_gouraud(r, a, row, x0, x1)                                            \
-    (fuzz_span_fill((row), (x0), (x1)), zs_fill_gouraud((r), (a), (row), (x0), (x1)))
+#define zs_fill_gouraud(r, a, dy, row, x0, x1)                                        \
+    (fuzz_span_fill((row), (x0), (x1)), zs_fill_gouraud((r), (a), (dy), (row), (x0), (x1)))
 #include "span.c"

@@ -765,11 +765,526 @@ static void test_box_inside(void **state)
     ZT_CHECK(g_raycast_bad == 0, "%lu pixels disagree with the ray caster", g_raycast_bad);
 }
 
+/* ================= 2. counting sort of new edges ================= */
+
+#define CS_W 640
+#define CS_H 36
+#define CS_SCENES 40
+
+static unsigned long g_cs_scenes, g_cs_tris, g_cs_bytes, g_cs_rows_counted, g_cs_max_batch,
+    g_cs_left, g_cs_right;
+
+/* A vertex on the batch row yr (first covered row yr: y within 0.35 px of
+ * its centre). */
+static double on_row(zt_rng *g, int yr) { return yr + zt_uniform(g, -0.35, 0.35); }
+
+/* Triangles whose top vertex lies on row yr, appended to sc until it holds
+ * at least `target` more: fans (shared edges from the apex), strips of quads
+ * (every inner edge shared), loose triangles with their own depth per vertex;
+ * tops from 150 px left of the screen to 150 px right of it. */
+static void cs_batch(zt_rng *g, zt_scene *sc, int target, int yr)
+{
+    size_t start = sc->nt;
+    while ((int)(sc->nt - start) < target) {
+        int kind = (int)zt_below(g, 3);
+        double d = zt_uniform(g, 1.0, 3.6);
+        double ax = zt_uniform(g, -150, CS_W + 150);
+        if (kind == 0) { /* fan */
+            int m = 3 + (int)zt_below(g, 6), apex, rim[9];
+            double R = zt_uniform(g, 10, 150), Ry = zt_uniform(g, 4, 30), ay = on_row(g, yr);
+            apex = zt_scene_vertex_px(sc, ax, ay, d, rand_color(g));
+            for (int i = 0; i < m; i++) {
+                double th = 3.141592653589793 * (0.1 + 0.8 * (i + zt_uniform(g, 0.1, 0.9)) / m);
+                rim[i] = zt_scene_vertex_px(sc, ax + R * cos(th), ay + 1.5 + Ry * sin(th),
+                                            d * (1 + zt_uniform(g, -0.25, 0.25)), rand_color(g));
+            }
+            for (int i = 0; i + 1 < m; i++)
+                zt_scene_tri_front(sc, apex, rim[i], rim[i + 1], rand_color(g));
+        } else if (kind == 1) { /* strip of quads, each split in two */
+            int n = 2 + (int)zt_below(g, 10), A[13], B[13];
+            double dx = zt_uniform(g, 4, 30), tx = zt_uniform(g, -0.3, 0.3),
+                   ty = zt_uniform(g, -0.3, 0.3), drop = zt_uniform(g, 4, 30);
+            for (int i = 0; i <= n; i++) {
+                double x = ax + i * dx + zt_uniform(g, -0.3, 0.3) * dx;
+                double yb = yr + drop + zt_uniform(g, -2, 2);
+                A[i] = zt_scene_vertex_px(sc, x, on_row(g, yr), d * (1 + tx * i / n), rand_color(g));
+                B[i] = zt_scene_vertex_px(sc, x + zt_uniform(g, -4, 4), yb,
+                                          d * (1 + tx * i / n + ty), rand_color(g));
+            }
+            for (int i = 0; i < n; i++) {
+                zt_scene_tri_front(sc, A[i], A[i + 1], B[i], rand_color(g));
+                zt_scene_tri_front(sc, A[i + 1], B[i + 1], B[i], rand_color(g));
+            }
+        } else { /* loose, penetrating */
+            int v0 = zt_scene_vertex_px(sc, ax, on_row(g, yr), d * exp(zt_uniform(g, -0.4, 0.4)),
+                                        rand_color(g));
+            int v1 = zt_scene_vertex_px(sc, ax + zt_uniform(g, -80, 80), yr + zt_uniform(g, 1, 30),
+                                        d * exp(zt_uniform(g, -0.4, 0.4)), rand_color(g));
+            int v2 = zt_scene_vertex_px(sc, ax + zt_uniform(g, -80, 80), yr + zt_uniform(g, 1, 30),
+                                        d * exp(zt_uniform(g, -0.4, 0.4)), rand_color(g));
+            zt_scene_tri_front(sc, v0, v1, v2, rand_color(g));
+        }
+    }
+}
+
+static void test_count_sort(void **state)
+{
+    (void)state;
+    zt_rng g;
+    zt_rng_seed(&g, SEED ^ 0xC5);
+    zt_ctx c, cn;
+    ctx_init_flags(&c, CS_W, CS_H, 1400, 4000, 2400, 0);
+    ctx_init_flags(&cn, CS_W, CS_H, 1400, 4000, 2400, ZS_CFG_NO_ZLINE);
+    zs_camera cam;
+    zt_camera_std(&cam, ZS_FX(1) / 2, ZS_FX(60));
+    zt_scene sc;
+    zt_scene_init(&sc, CS_W, CS_H, 256);
+    zt_gframe *f = zt_gframe_new(CS_W, CS_H);
+    size_t cap = (size_t)CS_W * CS_H * 3;
+    uint8_t *ref = malloc(cap), *img = malloc(cap);
+    static const int targets[] = {25, 40, 70, 120, 200, 300};
+    static const int bands[] = {1, 3, 8, CS_H};
+    for (int k = 0; k < CS_SCENES; k++) {
+        zt_scene_reset(&sc);
+        int target = targets[k % 6] + (int)zt_below(&g, 10);
+        if (target > 290) target = 290;
+        int yr = k % 4 == 0 ? 0 : (int)zt_range(&g, 1, CS_H - 6);
+        cs_batch(&g, &sc, target, yr);
+        /* some fall off the screen or are culled: top up until at least 13
+         * records (26 new edges) start on the row */
+        for (int more = 0;; more++) {
+            zs_mesh m0 = zt_scene_mesh(&sc, 1, 0);
+            zt_recs rs = {0};
+            zs_stats st;
+            draw_only(&c, &cam, &m0, NULL, &rs, &st);
+            int on_row = 0;
+            for (size_t i = 0; i < rs.n; i++) {
+                const int32_t *xy = rs.v[i].xy;
+                int32_t ymin = xy[1] < xy[3] ? xy[1] : xy[3];
+                ymin = ymin < xy[5] ? ymin : xy[5];
+                int row = first_row_of(ymin);
+                on_row += (row < 0 ? 0 : row) == yr;
+            }
+            zt_recs_free(&rs);
+            ZT_CHECK(more < 30, "scene %d: cannot get 13 records onto row %d", k, yr);
+            if (on_row >= 13) break;
+            cs_batch(&g, &sc, 8, yr);
+        }
+        if (yr == 0) /* rows entered from above join row 0's batch */
+            for (int i = 0; i < 6; i++) {
+                int v0 = zt_scene_vertex_px(&sc, zt_uniform(&g, -100, CS_W + 100), -zt_uniform(&g, 2, 20),
+                                            2.0, rand_color(&g));
+                int v1 = zt_scene_vertex_px(&sc, zt_uniform(&g, -100, CS_W + 100), zt_uniform(&g, 5, 30),
+                                            2.5, rand_color(&g));
+                int v2 = zt_scene_vertex_px(&sc, zt_uniform(&g, -100, CS_W + 100), zt_uniform(&g, 5, 30),
+                                            1.5, rand_color(&g));
+                zt_scene_tri_front(&sc, v0, v1, v2, rand_color(&g));
+            }
+        /* and some triangles elsewhere, so the batch merges into a list */
+        zt_scene_random(&g, &sc, 12, ZT_SC_PLAIN | ZT_SC_SHARED | ZT_SC_FLAT, 0.5);
+        zs_mesh m = zt_scene_mesh(&sc, 1, 1);
+        char what[120];
+        snprintf(what, sizeof what, "count-sort scene %d (row %d, %zu triangles, seed %llx)", k, yr,
+                 sc.nt, (unsigned long long)SEED);
+        zt_guarded_frame(&c, &cam, ZS_MODE_SPAN, &m, 1, NULL, f, bands[k % 4]);
+        ZT_ST(f->draw_st, ZS_OK);
+        ZT_CHECK(f->st.tris_dropped == 0 && f->st.records_skipped == 0 && f->st.verts_dropped == 0,
+                 "%s: pools too small for the test", what);
+        g_raycast_bad += zt_vs_raycast(f, what);
+        /* the batch on row yr, from the records: two new edges each */
+        int per_row[CS_H];
+        memset(per_row, 0, sizeof per_row);
+        for (size_t i = 0; i < f->recs.n; i++) {
+            const int32_t *xy = f->recs.v[i].xy;
+            int32_t ymin = xy[1] < xy[3] ? xy[1] : xy[3];
+            ymin = ymin < xy[5] ? ymin : xy[5];
+            int row = first_row_of(ymin);
+            if (row < 0) row = 0;
+            if (row < CS_H) per_row[row]++;
+            if (row == yr) {
+                int32_t xmin = xy[0] < xy[2] ? xy[0] : xy[2], xmax = xy[0] > xy[2] ? xy[0] : xy[2];
+                xmin = xmin < xy[4] ? xmin : xy[4];
+                xmax = xmax > xy[4] ? xmax : xy[4];
+                g_cs_left += xmin < 0;
+                g_cs_right += xmax > 16 * CS_W;
+            }
+        }
+        int batch = 2 * per_row[yr];
+        ZT_CHECK(batch > 24 && batch <= CS_W, "%s: %d new edges on row %d, not in the counting "
+                 "sort's range 25..%d", what, batch, yr, CS_W);
+        g_cs_rows_counted++;
+        if ((unsigned long)batch > g_cs_max_batch) g_cs_max_batch = (unsigned long)batch;
+        /* every format: span (with and without the z-buffer line's scratch)
+         * against zline */
+        zs_shading shading = k % 2 ? ZS_SHADE_GOURAUD : ZS_SHADE_FLAT;
+        zs_color bg = rand_color(&g);
+        for (int fi = 0; fi < ZS_FMT_COUNT; fi++) {
+            zs_shade_params sp = shade((zs_format)fi, shading, bg);
+            size_t n = (size_t)CS_W * CS_H * zs_format_bytes(sp.format);
+            memset(ref, 0x5A, cap);
+            render(&c, &cam, ZS_MODE_ZLINE, &sp, &m, 1, NULL, NULL, ref, CS_H, NULL);
+            char w2[200];
+            memset(img, 0xA5, cap);
+            render(&c, &cam, ZS_MODE_SPAN, &sp, &m, 1, NULL, NULL, img, bands[(k + fi) % 4], NULL);
+            snprintf(w2, sizeof w2, "%s: span vs zline", what);
+            same_image(ref, img, CS_W, CS_H, sp.format, w2);
+            memset(img, 0xA5, cap);
+            render(&cn, &cam, ZS_MODE_SPAN, &sp, &m, 1, NULL, NULL, img, bands[(k + fi + 1) % 4], NULL);
+            snprintf(w2, sizeof w2, "%s: span without the z-buffer line (insertion sort) vs zline",
+                     what);
+            same_image(ref, img, CS_W, CS_H, sp.format, w2);
+            g_cs_bytes += 2 * n;
+        }
+        g_cs_scenes++;
+        g_cs_tris += sc.nt;
+    }
+    ZT_CHECK(g_cs_left > 0 && g_cs_right > 0, "no batch triangle reaches off the left (%lu) or "
+             "right (%lu) of the screen", g_cs_left, g_cs_right);
+    free(ref);
+    free(img);
+    zt_gframe_free(f);
+    zt_scene_free(&sc);
+    zt_ctx_free(&c);
+    zt_ctx_free(&cn);
+    ZT_CHECK(g_raycast_bad == 0, "%lu pixels disagree with the ray caster", g_raycast_bad);
+}
+
+/* ================= 3. planes evaluated per row ================= */
+
+#define PL_W 56
+#define PL_H 560
+#define PL_SCENES 24
+
+static unsigned long g_pl_scenes, g_pl_tris, g_pl_needles, g_pl_steep, g_pl_gouraud_px,
+    g_pl_flat_px, g_pl_off_half, g_pl_flips;
+static double g_pl_maxdev;
+
+/* Window depth per pixel of a record's plane along x and y (double). */
+static void rec_gradients(const zt_rec *t, double *zdx, double *zdy)
+{
+    double x0 = t->xy[0] / 16.0, y0 = t->xy[1] / 16.0, x1 = t->xy[2] / 16.0, y1 = t->xy[3] / 16.0,
+           x2 = t->xy[4] / 16.0, y2 = t->xy[5] / 16.0;
+    double z0 = t->z[0] / 1073741824.0, z1 = t->z[1] / 1073741824.0, z2 = t->z[2] / 1073741824.0;
+    double a = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
+    *zdx = ((z1 - z0) * (y2 - y0) - (z2 - z0) * (y1 - y0)) / a;
+    *zdy = ((z2 - z0) * (x1 - x0) - (z1 - z0) * (x2 - x0)) / a;
+}
+
+static void test_planes_per_row(void **state)
+{
+    (void)state;
+    zt_rng g;
+    zt_rng_seed(&g, SEED ^ 0x9A);
+    zt_ctx c;
+    ctx_init_flags(&c, PL_W, PL_H, 64, 200, 64, 0);
+    zs_camera cam;
+    const double near_d = 0.5;
+    zt_camera_std(&cam, ZS_FX(1) / 2, ZS_FX(60));
+    zt_scene sc;
+    zt_scene_init(&sc, PL_W, PL_H, 4096);
+    zt_gframe *f = zt_gframe_new(PL_W, PL_H);
+    size_t n3 = (size_t)PL_W * PL_H * 3;
+    uint8_t *ref = malloc(n3), *img = malloc(n3), *rgb = malloc(n3);
+    static const int bands[] = {1, 3, 8, PL_H};
+    for (int k = 0; k < PL_SCENES; k++) {
+        zt_scene_reset(&sc);
+        int ntall = 2 + (int)zt_below(&g, 4), npair = 1 + (int)zt_below(&g, 2),
+            nneedle = 2 + (int)zt_below(&g, 4);
+        int needle_first = -1;
+        for (int i = 0; i < ntall; i++) { /* top to bottom, depths apart */
+            int v0 = zt_scene_vertex_px(&sc, zt_uniform(&g, -5, PL_W + 5), zt_uniform(&g, -8, 3),
+                                        zt_uniform(&g, 1.2, 6), rand_color(&g));
+            int v1 = zt_scene_vertex_px(&sc, zt_uniform(&g, -5, PL_W + 5),
+                                        zt_uniform(&g, PL_H - 3, PL_H + 8), zt_uniform(&g, 1.2, 6),
+                                        rand_color(&g));
+            int v2 = zt_scene_vertex_px(&sc, zt_uniform(&g, -10, PL_W + 10),
+                                        zt_uniform(&g, 0.2 * PL_H, 0.8 * PL_H),
+                                        zt_uniform(&g, 1.2, 6), rand_color(&g));
+            zt_scene_tri_front(&sc, v0, v1, v2, rand_color(&g));
+        }
+        for (int i = 0; i < npair; i++) { /* near at the top and far at the bottom, and back */
+            double xa = zt_uniform(&g, -10, 10), xb = PL_W + zt_uniform(&g, -10, 10);
+            int a0 = zt_scene_vertex_px(&sc, xa, -4, 1.5, rand_color(&g));
+            int a1 = zt_scene_vertex_px(&sc, xb, -5, 1.6, rand_color(&g));
+            int a2 = zt_scene_vertex_px(&sc, zt_uniform(&g, 0, PL_W), PL_H + 4, 5.0, rand_color(&g));
+            zt_scene_tri_front(&sc, a0, a1, a2, rand_color(&g));
+            int b0 = zt_scene_vertex_px(&sc, xa + zt_uniform(&g, -5, 5), PL_H + 4, 1.5, rand_color(&g));
+            int b1 = zt_scene_vertex_px(&sc, xb + zt_uniform(&g, -5, 5), PL_H + 5, 1.6, rand_color(&g));
+            int b2 = zt_scene_vertex_px(&sc, zt_uniform(&g, 0, PL_W), -4, 5.0, rand_color(&g));
+            zt_scene_tri_front(&sc, b0, b1, b2, rand_color(&g));
+        }
+        needle_first = (int)sc.nt;
+        for (int i = 0; i < nneedle; i++) {
+            /* long and thin (a fraction of a pixel), its third vertex much
+             * deeper than the long edge: huge, nearly cancelling gradients */
+            double x0 = zt_uniform(&g, 5, PL_W - 5), y0 = zt_uniform(&g, -6, 2);
+            double x1 = x0 + zt_uniform(&g, -50, 50), y1 = zt_uniform(&g, PL_H - 2, PL_H + 6);
+            double fr = zt_uniform(&g, 0.2, 0.8), off = zt_uniform(&g, 0.1, 0.4);
+            if (zt_below(&g, 2)) off = -off;
+            zs_color col = rand_color(&g);
+            double d0 = zt_uniform(&g, 0.7, 1.5), d1 = zt_uniform(&g, 0.7, 1.5);
+            int v0 = zt_scene_vertex_px(&sc, x0, y0, d0, col);
+            int v1 = zt_scene_vertex_px(&sc, x1, y1, d1, col);
+            int v2 = zt_scene_vertex_px(&sc, x0 + fr * (x1 - x0) + off, y0 + fr * (y1 - y0),
+                                        zt_uniform(&g, 4, 6), col);
+            zt_scene_tri_front(&sc, v0, v1, v2, col);
+        }
+        zs_mesh m = zt_scene_mesh(&sc, 1, 1);
+        char what[120];
+        snprintf(what, sizeof what, "tall scene %d (seed %llx)", k, (unsigned long long)SEED);
+        /* ID16: the ray caster on band 1, every band against zline */
+        zt_guarded_frame(&c, &cam, ZS_MODE_SPAN, &m, 1, NULL, f, 1);
+        ZT_ST(f->draw_st, ZS_OK);
+        ZT_CHECK(f->st.tris_clipped == 0 && f->st.tris_dropped == 0 && f->st.records_skipped == 0,
+                 "%s: clipped %u dropped %u skipped %u (the colour check needs whole triangles)",
+                 what, f->st.tris_clipped, f->st.tris_dropped, f->st.records_skipped);
+        g_raycast_bad += zt_vs_raycast(f, what);
+        for (size_t i = 0; i < f->recs.n; i++) {
+            const zt_rec *t = &f->recs.v[i];
+            if ((int)t->tag - 1 < needle_first) continue;
+            g_pl_needles++;
+            /* steep by activate.c's rule: |zdx| (x extent + 1 px) + |zdy|
+             * (y extent + 1 px) >= 2^46 in Q40, i.e. 64 in window depth */
+            double zdx, zdy;
+            rec_gradients(t, &zdx, &zdy);
+            int32_t xmin = t->xy[0], xmax = t->xy[0];
+            for (int v = 1; v < 3; v++) {
+                xmin = t->xy[2 * v] < xmin ? t->xy[2 * v] : xmin;
+                xmax = t->xy[2 * v] > xmax ? t->xy[2 * v] : xmax;
+            }
+            double h = (t->xy[5] > t->xy[1] ? t->xy[5] : t->xy[1]) -
+                       (t->xy[3] < t->xy[1] ? t->xy[3] : t->xy[1]);
+            double h2 = 0;
+            for (int v = 0; v < 3; v++)
+                for (int u = 0; u < 3; u++)
+                    h2 = fabs((double)t->xy[2 * v + 1] - t->xy[2 * u + 1]) > h2
+                             ? fabs((double)t->xy[2 * v + 1] - t->xy[2 * u + 1]) : h2;
+            (void)h;
+            g_pl_steep += fabs(zdx) * ((xmax - xmin) / 16.0 + 1) + fabs(zdy) * (h2 / 16.0 + 1) >= 64.0;
+        }
+        /* the pairs flip order down the screen: count rows where the top
+         * row's owner and the bottom row's differ in the middle column */
+        g_pl_flips += zt_id_at(f->img, PL_W, PL_W / 2, 2) != zt_id_at(f->img, PL_W, PL_W / 2, PL_H - 3);
+        memcpy(ref, f->img, (size_t)PL_W * PL_H * 2);
+        for (int b = 1; b < 4; b++) {
+            zs_shade_params sp = shade(ZS_FMT_ID16, ZS_SHADE_FLAT, 0);
+            render(&c, &cam, ZS_MODE_SPAN, &sp, &m, 1, NULL, NULL, img, bands[b], NULL);
+            same_image(ref, img, PL_W, PL_H, ZS_FMT_ID16, what);
+        }
+        {
+            zs_shade_params sp = shade(ZS_FMT_ID16, ZS_SHADE_FLAT, 0);
+            render(&c, &cam, ZS_MODE_ZLINE, &sp, &m, 1, NULL, NULL, img, PL_H, NULL);
+            same_image(ref, img, PL_W, PL_H, ZS_FMT_ID16, what);
+        }
+        /* RGB888 Gouraud: every band against zline, then the colours */
+        zs_color bg = rand_color(&g);
+        zs_shade_params sp = shade(ZS_FMT_RGB888, ZS_SHADE_GOURAUD, bg);
+        render(&c, &cam, ZS_MODE_ZLINE, &sp, &m, 1, NULL, NULL, rgb, PL_H, NULL);
+        for (int b = 0; b < 4; b++) {
+            render(&c, &cam, ZS_MODE_SPAN, &sp, &m, 1, NULL, NULL, img, bands[b], NULL);
+            same_image(rgb, img, PL_W, PL_H, ZS_FMT_RGB888, what);
+        }
+        for (int y = 0; y < PL_H; y++)
+            for (int x = 0; x < PL_W; x++) {
+                uint16_t id = zt_id_at(ref, PL_W, x, y);
+                const uint8_t *px = rgb + 3 * ((size_t)y * PL_W + (size_t)x);
+                if (!id) {
+                    ZT_CHECK(px[0] == (bg >> 16 & 255) && px[1] == (bg >> 8 & 255) &&
+                                 px[2] == (bg & 255),
+                             "%s: background pixel (%d,%d) is %02x%02x%02x", what, x, y, px[0],
+                             px[1], px[2]);
+                    continue;
+                }
+                const zt_rec *t = NULL;
+                for (size_t i = 0; i < f->recs.n && !t; i++)
+                    if (f->recs.v[i].tag == id) t = &f->recs.v[i];
+                ZT_CHECK(t != NULL, "%s: no record of tag %u", what, id);
+                const uint16_t *ix = &sc.idx[3 * (size_t)(id - 1)];
+                zs_color vc[3] = {sc.vcol[ix[0]], sc.vcol[ix[1]], sc.vcol[ix[2]]};
+                if (vc[0] == vc[1] && vc[1] == vc[2]) {
+                    ZT_CHECK(px[0] == (vc[0] >> 16 & 255) && px[1] == (vc[0] >> 8 & 255) &&
+                                 px[2] == (vc[0] & 255),
+                             "%s: flat triangle %u at (%d,%d) is %02x%02x%02x, not %06x", what, id, x,
+                             y, px[0], px[1], px[2], (unsigned)vc[0]);
+                    g_pl_flat_px++;
+                    continue;
+                }
+                /* barycentric weights of the snapped vertices at the centre */
+                double X0 = t->xy[0], Y0 = t->xy[1], X1 = t->xy[2], Y1 = t->xy[3], X2 = t->xy[4],
+                       Y2 = t->xy[5], cx = 16.0 * x + 8, cy = 16.0 * y + 8;
+                double a = (X1 - X0) * (Y2 - Y0) - (X2 - X0) * (Y1 - Y0);
+                double l1 = ((cx - X0) * (Y2 - Y0) - (X2 - X0) * (cy - Y0)) / a;
+                double l2 = ((X1 - X0) * (cy - Y0) - (cx - X0) * (Y1 - Y0)) / a;
+                for (int ch = 0; ch < 3; ch++) {
+                    int sh = 16 - 8 * ch;
+                    double c0 = vc[0] >> sh & 255, c1 = vc[1] >> sh & 255, c2 = vc[2] >> sh & 255;
+                    double want = c0 + l1 * (c1 - c0) + l2 * (c2 - c0);
+                    want = want < 0 ? 0 : want > 255 ? 255 : want;
+                    double dev = fabs(px[ch] - want);
+                    if (dev > g_pl_maxdev) g_pl_maxdev = dev;
+                    g_pl_off_half += dev > 0.5;
+                    ZT_CHECK(dev <= 0.5 + 1.0 / 32,
+                             "%s: Gouraud pixel (%d,%d) of triangle %u channel %d is %u, the "
+                             "barycentric colour %.4f", what, x, y, id, ch, px[ch], want);
+                }
+                g_pl_gouraud_px++;
+            }
+        g_pl_scenes++;
+        g_pl_tris += sc.nt;
+    }
+    ZT_CHECK(g_pl_steep > 0, "no needle is steep by activate.c's rule: ZS_ACT_STEEP not exercised");
+    ZT_CHECK(g_pl_flips > 0, "no scene flips depth order down the screen");
+    free(ref);
+    free(img);
+    free(rgb);
+    zt_gframe_free(f);
+    zt_scene_free(&sc);
+    zt_ctx_free(&c);
+    (void)near_d;
+    ZT_CHECK(g_raycast_bad == 0, "%lu pixels disagree with the ray caster", g_raycast_bad);
+}
+
+/* ================= 4. depth ranges and shared-edge hand-over ================= */
+
+#define LG_W 96
+#define LG_H 72
+#define LG_SCENES 160
+
+static unsigned long g_lg_scenes, g_lg_tris, g_lg_dups, g_lg_dup_px, g_lg_bytes;
+
+/* A grid of nx x ny quads, each split along a random diagonal, over the
+ * pixel rectangle (x0, y0) + (i cw, j ch), depth d (1 + tx u + ty v) plus
+ * bump * d of noise per vertex (then the quads fold along their diagonals).
+ * Returns the index of its first triangle. */
+static int lg_grid(zt_rng *g, zt_scene *sc, double x0, double y0, double cw, double ch, int nx,
+                   int ny, double d, double tx, double ty, double bump)
+{
+    int first = (int)sc->nt, base = (int)sc->nv;
+    for (int j = 0; j <= ny; j++)
+        for (int i = 0; i <= nx; i++) {
+            double u = (double)i / nx - 0.5, v = (double)j / ny - 0.5;
+            zt_scene_vertex_px(sc, x0 + i * cw, y0 + j * ch,
+                               d * (1 + tx * u + ty * v + bump * zt_uniform(g, -1, 1)), rand_color(g));
+        }
+    for (int j = 0; j < ny; j++)
+        for (int i = 0; i < nx; i++) {
+            int a = base + j * (nx + 1) + i, b = a + 1, cc = a + nx + 1, dd = cc + 1;
+            if (zt_below(g, 2)) {
+                zt_scene_tri_front(sc, a, b, dd, rand_color(g));
+                zt_scene_tri_front(sc, a, dd, cc, rand_color(g));
+            } else {
+                zt_scene_tri_front(sc, a, b, cc, rand_color(g));
+                zt_scene_tri_front(sc, b, dd, cc, rand_color(g));
+            }
+        }
+    return first;
+}
+
+static void test_layers(void **state)
+{
+    (void)state;
+    zt_rng g;
+    zt_rng_seed(&g, SEED ^ 0x1A);
+    zt_ctx c;
+    ctx_init_flags(&c, LG_W, LG_H, 1200, 2400, 1200, 0);
+    zs_camera cam;
+    zt_camera_std(&cam, ZS_FX(1) / 2, ZS_FX(60));
+    zt_scene sc;
+    zt_scene_init(&sc, LG_W, LG_H, 512);
+    zt_gframe *f = zt_gframe_new(LG_W, LG_H);
+    size_t cap = (size_t)LG_W * LG_H * 3;
+    uint8_t *ref = malloc(cap), *img = malloc(cap);
+    zt_cast cast;
+    zt_cast_alloc(&cast, LG_W, LG_H);
+    for (int k = 0; k < LG_SCENES; k++) {
+        zt_scene_reset(&sc);
+        int nl = 2 + (int)zt_below(&g, 3);
+        double d = zt_uniform(&g, 1.5, 4), unit = 1.0 / 512;
+        int firsts[4], counts[4];
+        for (int l = 0; l < nl; l++) {
+            int kind = (int)zt_below(&g, 5);
+            int nx = 2 + (int)zt_below(&g, 5), ny = 2 + (int)zt_below(&g, 4);
+            double x0 = zt_uniform(&g, -30, LG_W * 0.5), y0 = zt_uniform(&g, -25, LG_H * 0.5);
+            double cw = zt_uniform(&g, 6, 30), ch = zt_uniform(&g, 6, 25);
+            double tx = 0, ty = 0, bump = 0;
+            if (kind == 0) d *= zt_uniform(&g, 1.5, 2.5);        /* far apart */
+            else if (kind == 1) d *= zt_uniform(&g, 1.001, 1.02); /* close */
+            else if (kind == 2) d += unit * (double)zt_below(&g, 3); /* 0..2 position units */
+            else if (kind == 3) {                                 /* through the others */
+                tx = zt_uniform(&g, -0.6, 0.6);
+                ty = zt_uniform(&g, -0.6, 0.6);
+            } else {
+                bump = zt_uniform(&g, 0.005, 0.05);                /* folded quads */
+            }
+            if (l > 0 && zt_below(&g, 4) == 0) { /* the same rectangle as the last layer */
+                x0 = zt_uniform(&g, -10, 10);
+                y0 = zt_uniform(&g, -10, 10);
+            }
+            firsts[l] = lg_grid(&g, &sc, x0, y0, cw, ch, nx, ny, d, tx, ty, bump);
+            counts[l] = (int)sc.nt - firsts[l];
+        }
+        /* exact coplanar duplicates of a layer, later in the submission,
+         * each triangle's vertices rotated (same indices, or copied vertices) */
+        int ndup = (int)zt_below(&g, 3);
+        for (int i = 0; i < ndup; i++) {
+            int l = (int)zt_below(&g, (uint32_t)nl), copy = (int)zt_below(&g, 2);
+            for (int t = firsts[l]; t < firsts[l] + counts[l]; t++) {
+                int id[3] = {sc.idx[3 * t], sc.idx[3 * t + 1], sc.idx[3 * t + 2]};
+                if (copy)
+                    for (int v = 0; v < 3; v++) {
+                        int n = zt_scene_vertex_world(&sc, 0, 0, 0, rand_color(&g));
+                        memcpy(&sc.pos[3 * n], &sc.pos[3 * id[v]], 3 * sizeof sc.pos[0]);
+                        id[v] = n;
+                    }
+                int r = (int)zt_below(&g, 3);
+                zt_scene_tri(&sc, id[r], id[(r + 1) % 3], id[(r + 2) % 3], rand_color(&g));
+            }
+            g_lg_dups++;
+        }
+        zs_mesh m = zt_scene_mesh(&sc, 1, 1);
+        char what[120];
+        snprintf(what, sizeof what, "layer scene %d (%d layers, %d duplicated, seed %llx)", k, nl,
+                 ndup, (unsigned long long)SEED);
+        zt_guarded_frame(&c, &cam, ZS_MODE_SPAN, &m, 1, NULL, f, 1 + (int)zt_below(&g, 9));
+        ZT_ST(f->draw_st, ZS_OK);
+        ZT_CHECK(f->st.tris_dropped == 0 && f->st.records_skipped == 0, "%s: pools too small", what);
+        g_raycast_bad += zt_vs_raycast(f, what);
+        zt_raycast(&f->recs, &cast);
+        for (int i = 0; i < LG_W * LG_H; i++) g_lg_dup_px += cast.exact[i];
+        memcpy(ref, f->img, (size_t)LG_W * LG_H * 2);
+        zs_shade_params sp = shade(ZS_FMT_ID16, ZS_SHADE_FLAT, 0);
+        render(&c, &cam, ZS_MODE_ZLINE, &sp, &m, 1, NULL, NULL, img, LG_H, NULL);
+        same_image(ref, img, LG_W, LG_H, ZS_FMT_ID16, what);
+        static const zs_format fmts[2] = {ZS_FMT_RGB565, ZS_FMT_RGB888};
+        for (int fi = 0; fi < 2; fi++) {
+            sp = shade(fmts[fi], fi ? ZS_SHADE_GOURAUD : ZS_SHADE_FLAT, rand_color(&g));
+            render(&c, &cam, ZS_MODE_ZLINE, &sp, &m, 1, NULL, NULL, ref, LG_H, NULL);
+            render(&c, &cam, ZS_MODE_SPAN, &sp, &m, 1, NULL, NULL, img, 1 + (int)zt_below(&g, 9), NULL);
+            same_image(ref, img, LG_W, LG_H, sp.format, what);
+            g_lg_bytes += (size_t)LG_W * LG_H * zs_format_bytes(sp.format);
+        }
+        g_lg_scenes++;
+        g_lg_tris += sc.nt;
+    }
+    zt_cast_free(&cast);
+    free(ref);
+    free(img);
+    zt_gframe_free(f);
+    zt_scene_free(&sc);
+    zt_ctx_free(&c);
+    ZT_CHECK(g_lg_dup_px > 0, "no pixel is an exact duplicate tie");
+    ZT_CHECK(zt_tot.excluded * 100 <= zt_tot.px, "%lu of %lu covered pixels excluded as near ties "
+             "(limit 1%%)", zt_tot.excluded, zt_tot.px);
+    ZT_CHECK(g_raycast_bad == 0, "%lu pixels disagree with the ray caster", g_raycast_bad);
+}
+
 int main(void)
 {
-    (void)first_row_of; (void)ctx_init_flags; /*TMP*/
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_box_inside),
+        cmocka_unit_test(test_count_sort),
+        cmocka_unit_test(test_planes_per_row),
+        cmocka_unit_test(test_layers),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
 
@@ -778,11 +1293,21 @@ int main(void)
            "guard planes; identity, slight, any and margin turns; %lu redrawn), %lu probe meshes "
            "rendered (%lu need no clipping, %lu do; %lu with the box estimated inside), last "
            "position inside exactly on near %lu and on far %lu times, %lu margin slides drawn; "
-           "%lu renders; ray caster: %lu of %lu covered pixels excluded as near ties, %lu "
-           "disagreeing; %d failed\n",
+           "count sort: %lu scenes %dx%d (%lu triangles), batches of 26..%lu new edges on one "
+           "row, %lu batch triangles reaching off the left and %lu off the right, %lu bytes "
+           "compared (6 formats, span and span without the z-buffer line vs zline); planes: %lu "
+           "scenes %dx%d (%lu triangles, %lu needles, %lu of them steep), %lu depth-order flips "
+           "down the screen, %lu Gouraud pixels (max deviation %.3f, %lu channels beyond 0.5) "
+           "and %lu flat pixels against the barycentric reference; layers: %lu scenes (%lu "
+           "triangles, %lu duplicated layers, %lu exact-duplicate tie pixels), %lu bytes "
+           "compared; %lu renders; ray caster: %lu of %lu covered pixels excluded as near ties, "
+           "%lu disagreeing; %d failed\n",
            (unsigned long long)SEED, g_bx_scenes, g_bx_redrawn, g_bx_probes, g_bx_inside,
-           g_bx_outside, g_bx_fast, g_bx_exact_near, g_bx_exact_far, g_bx_slides, g_renders,
-           zt_tot.excluded, zt_tot.px, g_raycast_bad, rc);
+           g_bx_outside, g_bx_fast, g_bx_exact_near, g_bx_exact_far, g_bx_slides, g_cs_scenes,
+           CS_W, CS_H, g_cs_tris, g_cs_max_batch, g_cs_left, g_cs_right, g_cs_bytes, g_pl_scenes,
+           PL_W, PL_H, g_pl_tris, g_pl_needles, g_pl_steep, g_pl_flips, g_pl_gouraud_px,
+           g_pl_maxdev, g_pl_off_half, g_pl_flat_px, g_lg_scenes, g_lg_tris, g_lg_dups,
+           g_lg_dup_px, g_lg_bytes, g_renders, zt_tot.excluded, zt_tot.px, g_raycast_bad, rc);
     fflush(stdout);
     return rc;
 }

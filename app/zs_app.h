@@ -78,6 +78,11 @@ typedef struct zs_app_cli {
  * bad command line (2) or no memory (1); then o is already freed. */
 int zs_app_parse(zs_app_opts *o, int argc, char **argv, const zs_app_cli *cli);
 
+/* Checks what the options name before any device is opened: the panel
+ * exists and takes the wire format. 0, or -1 after a message naming the
+ * option (zs_app_parse calls it). */
+int zs_app_check(const zs_app_opts *o, const char *prog);
+
 /* Defaults; argc bounds the number of --mesh options. */
 void zs_app_defaults(zs_app_opts *o, int argc);
 /* Matches one common option at argv[*i]: 1 consumed (value too), 0 not a
@@ -100,7 +105,8 @@ void zs_app_free(zs_app_opts *o);
     "  --partial             after the first frame send only the rows that changed\n"        \
     "                        (narrowed to the changed columns)\n"                            \
     "  --brightness 0..255   backlight level (GPIO backlight: 0 off, else on; default 255)\n" \
-    "  --quiet               only errors\n"
+    "  --quiet               only errors\n"                                            \
+    "  --help, --version\n"
 /* The panels the drivers know, with sizes, clocks and wire formats. */
 void zs_app_list_panels(FILE *f);
 

@@ -84,6 +84,10 @@ int zs_app_parse(zs_app_opts *o, int argc, char **argv, const zs_app_cli *cli)
             zs_app_free(o);
             return 0;
         }
+        if (zs_opt_version(argv[i], cli->prog)) {
+            zs_app_free(o);
+            return 0;
+        }
         m = zs_app_option(argc, argv, &i, o, cli->prog);
         if (m == 0)
             m = cli->option(cli->cfg, argc, argv, &i);
@@ -99,7 +103,31 @@ int zs_app_parse(zs_app_opts *o, int argc, char **argv, const zs_app_cli *cli)
         zs_app_free(o);
         return 0;
     }
+    if (zs_app_check(o, cli->prog) != 0) {
+        zs_app_free(o);
+        return 2;
+    }
     return ZS_APP_PARSED;
+}
+
+int zs_app_check(const zs_app_opts *o, const char *prog)
+{
+    const zs_panel_desc *d = zs_panel_find(o->panel);
+    zs_format fmt;
+
+    if (d == NULL) {
+        fprintf(stderr, "%s: --panel: unknown panel '%s' (--list shows them)\n", prog, o->panel);
+        return -1;
+    }
+    fmt = o->format_set ? o->format
+                        : (zs_panel_bytes_per_pixel(d, ZS_FMT_RGB565_BE) ? ZS_FMT_RGB565_BE
+                                                                         : ZS_FMT_RGB666);
+    if (zs_panel_bytes_per_pixel(d, fmt) == 0) {
+        fprintf(stderr, "%s: --format: %s does not take %s over SPI\n", prog, d->name,
+                fmt == ZS_FMT_RGB565_BE ? "rgb565" : "rgb666");
+        return -1;
+    }
+    return 0;
 }
 
 void zs_app_list_panels(FILE *f)

@@ -18,6 +18,22 @@
 #define ZS_IMPORT_ERR_MESH (-1001)  /* a node names a mesh the scene does not have */
 #define ZS_IMPORT_ERR_DEPTH (-1002) /* hierarchy deeper than ZS_IMPORT_MAX_DEPTH */
 
+/* Seconds an import may take before zs_import_guard_begin's alarm stops the
+ * program (a few malformed files make assimp loop forever: a 330-byte PLY
+ * does in assimp 5.2). $ZSPAN_IMPORT_SECONDS overrides it. */
+#define ZS_IMPORT_SECONDS 30u
+
+/* Arms the import timeout around one aiImportFile call: if the importer has
+ * not returned after the timeout, the program prints "PROG: PATH: the model
+ * importer did not finish in N s (a malformed file?)" and exits with
+ * exit_code. prog and path must stay valid until zs_import_guard_end. */
+void zs_import_guard_begin(const char *prog, const char *path, int exit_code);
+/* Disarms it (call right after the import returns). */
+void zs_import_guard_end(void);
+/* The timeout in seconds ($ZSPAN_IMPORT_SECONDS if set to 1..86400, else
+ * ZS_IMPORT_SECONDS). */
+unsigned zs_import_seconds(void);
+
 /* One mesh of the scene placed by its node. */
 typedef struct zs_import_part {
     const struct aiScene *scene;

@@ -410,6 +410,48 @@ oom:
     return -1;
 }
 
+/* Signed volume the chunks from `first` enclose, as a share of their bounding
+ * box: about -1..1 for closed meshes (negative: clockwise seen from
+ * outside); 0 when too small to say (an open sheet, a thin mesh). */
+static double winding_volume(const zs_model *scene, size_t first)
+{
+    double vol = 0.0, lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0}, box;
+    size_t i;
+    uint32_t t, v;
+    int a, any = 0;
+
+    for (i = first; i < scene->count; i++) {
+        const zs_model_chunk *c = &scene->chunks[i];
+        for (v = 0; v < c->vcount; v++)
+            for (a = 0; a < 3; a++) {
+                double x = c->pos[3 * v + (uint32_t)a];
+                if (!any || x < lo[a])
+                    lo[a] = x;
+                if (!any || x > hi[a])
+                    hi[a] = x;
+                any = a == 2 ? 1 : any;
+            }
+    }
+    for (i = first; i < scene->count; i++) {
+        const zs_model_chunk *c = &scene->chunks[i];
+        for (t = 0; t < c->tcount; t++) {
+            double p[3][3];
+            int j;
+            for (j = 0; j < 3; j++)
+                for (a = 0; a < 3; a++) /* about the box's centre: better rounding */
+                    p[j][a] = c->pos[3u * c->idx[3 * t + (uint32_t)j] + (uint32_t)a] -
+                              0.5 * (lo[a] + hi[a]);
+            vol += (p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) -
+                    p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
+                    p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0])) / 6.0;
+        }
+    }
+    box = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
+    if (!(box > 0.0) || !isfinite(vol / box) || fabs(vol / box) < 0.02)
+        return 0.0;
+    return vol / box;
+}
+
 int zs_model_load(zs_model *scene, const char *path, int want_normals)
 {
     zs_model_opts o = zs_model_opts_default();
@@ -425,6 +467,8 @@ int zs_model_load_opts(zs_model *scene, const char *path, const zs_model_opts *o
     load_ctx lc;
     uint32_t before = scene->total_tris;
     uint8_t *file_normals = NULL;
+    size_t first_chunk = scene->count;
+    unsigned nmeshes;
     char magic[8];
     struct stat sb;
     FILE *probe;
@@ -448,6 +492,10 @@ int zs_model_load_opts(zs_model *scene, const char *path, const zs_model_opts *o
         return rc;
     }
     fclose(probe);
+    /* Which meshes bring their own normals: from an import without smooth
+     * normals (assimp's normals step cannot run on its own afterwards). */
+    if (o->want_normals > 1)
+        flags |= aiProcess_GenSmoothNormals | aiProcess_ForceGenNormals;
     zs_import_guard_begin(o->prog, path, 1);
     ai = aiImportFile(path, flags);
     zs_import_guard_end();
@@ -460,24 +508,27 @@ int zs_model_load_opts(zs_model *scene, const char *path, const zs_model_opts *o
         aiReleaseImport(ai);
         return -1;
     }
-    /* Which meshes bring their own normals, before smooth ones are made. */
-    file_normals = calloc(ai->mNumMeshes + 1u, 1);
+    nmeshes = ai->mNumMeshes;
+    file_normals = calloc(nmeshes + 1u, 1);
     if (file_normals == NULL) {
         aiReleaseImport(ai);
         fprintf(stderr, "%s: %s: out of memory\n", o->prog, path);
         return -1;
     }
-    for (k = 0; k < ai->mNumMeshes; k++)
+    for (k = 0; k < nmeshes; k++)
         file_normals[k] = ai->mMeshes != NULL && ai->mMeshes[k] != NULL &&
                           ai->mMeshes[k]->mNormals != NULL && o->want_normals < 2;
-    if (o->want_normals) {
-        unsigned post = aiProcess_GenSmoothNormals;
-        if (o->want_normals > 1)
-            post |= aiProcess_ForceGenNormals; /* replace the file's normals by smooth ones */
-        ai = aiApplyPostProcessing(ai, post);
-        if (ai == NULL) {
-            fprintf(stderr, "%s: %s: generating normals failed: %s\n", o->prog, path,
-                    aiGetErrorString());
+    if (o->want_normals == 1) {
+        /* Again, with smooth normals made where the file has none. */
+        aiReleaseImport(ai);
+        zs_import_guard_begin(o->prog, path, 1);
+        ai = aiImportFile(path, flags | aiProcess_GenSmoothNormals);
+        zs_import_guard_end();
+        if (ai == NULL || ai->mNumMeshes != nmeshes || ai->mRootNode == NULL) {
+            fprintf(stderr, "%s: cannot load %s: %s\n", o->prog, path,
+                    ai == NULL ? aiGetErrorString() : "a second import differs");
+            if (ai != NULL)
+                aiReleaseImport(ai);
             free(file_normals);
             return -1;
         }
@@ -505,6 +556,11 @@ int zs_model_load_opts(zs_model *scene, const char *path, const zs_model_opts *o
                 path);
         return -1;
     }
+    if (!o->quiet && lc.normals_checked == 0 && winding_volume(scene, first_chunk) < 0.0)
+        fprintf(stderr,
+                "%s: warning: %s: the triangles enclose a negative volume (they wind clockwise "
+                "seen from outside): if it looks inside out, try --flip-winding\n",
+                o->prog, path);
     if (!o->quiet && lc.normals_checked > 0 && lc.normals_against * 2 > lc.normals_checked)
         fprintf(stderr,
                 "%s: warning: %s: the file's normals point against the winding of %lu of %lu "

@@ -314,7 +314,7 @@ static void import_model(const options *o, model *m)
     aiAttachLogStream(&ls);
     /* Some malformed files make the importer loop forever (a 330-byte PLY
      * does in assimp 5.2): the shared guard stops it with a message. */
-    zs_import_guard_begin(g_prog, g_input, EXIT_INPUT);
+    zs_import_guard_begin("zspan-meshc: error", g_input, EXIT_INPUT);
     s = aiImportFile(o->input, aiProcess_ValidateDataStructure);
     zs_import_guard_end();
     if (!s) {

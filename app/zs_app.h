@@ -33,6 +33,9 @@ typedef struct zs_app_opts {
     int list;
     long backlight;       /* 0..255 */
     const char *dump;     /* write the last frame as sent (wire format, raw) */
+    int flip_winding;     /* --mesh files with clockwise triangles */
+    int two_sided;        /* draw the meshes' back faces too */
+    int up_axis;          /* the mesh files' up axis (zs_opt_up_axis) */
 } zs_app_opts;
 
 /* What the loop reports after each frame. */
@@ -96,6 +99,9 @@ void zs_app_free(zs_app_opts *o);
     "  --rotation 0..3       quarter turns clockwise (default 0)\n"                          \
     "  --format rgb565|rgb666  wire pixel format (default rgb565; ili9488: rgb666)\n"        \
     "  --mesh FILE           a mesh file (assimp formats; repeatable) instead of the demo\n" \
+    "  --flip-winding, --two-sided, --up-axis AXIS\n"                                    \
+    "                        the mesh files' triangles are clockwise; draw back faces;\n" \
+    "                        their up axis (x, y, z, -x, -y, -z; default auto)\n"          \
     "  --frames N            frames to send (default 1; 0 = until Ctrl-C)\n"                 \
     "  --start N             first demo frame (default 0)\n"                                 \
     "  --spin DEG            turn per frame (demo: camera orbit, multiples of 3; default 3)\n" \

@@ -33,6 +33,10 @@ int zs_app_option(int argc, char **argv, int *i, zs_app_opts *o, const char *pro
     if (strcmp(a, "--partial") == 0) { o->partial = 1; return 1; }
     if (strcmp(a, "--quiet") == 0) { o->quiet = 1; return 1; }
     if (strcmp(a, "--list") == 0) { o->list = 1; return 1; }
+    if (strcmp(a, "--flip-winding") == 0) { o->flip_winding = 1; return 1; }
+    if (strcmp(a, "--two-sided") == 0) { o->two_sided = 1; return 1; }
+    if ((m = zs_opt_value(argc, argv, i, "--up-axis", &v, prog)) != 0)
+        return m < 0 || zs_opt_up_axis(prog, "--up-axis", v, &o->up_axis) != 0 ? -1 : 1;
 #define LONG_OPT(name, lo, hi, field)                                                          \
     if ((m = zs_opt_long_at(argc, argv, i, name, lo, hi, &o->field, prog)) != 0)               \
         return m;

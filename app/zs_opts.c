@@ -333,3 +333,18 @@ int zs_opt_seq_path(char *buf, size_t size, const char *pattern, long n)
     buf[o] = '\0';
     return 0;
 }
+
+int zs_opt_up_axis(const char *prog, const char *opt, const char *s, int *out)
+{
+    static const char *const names[] = {"auto", "x", "y", "z", "-x", "-y", "-z"};
+    int k;
+
+    for (k = 0; k < 7; k++)
+        if (strcmp(s, names[k]) == 0 ||
+            (k >= 1 && k <= 3 && s[0] == '+' && strcmp(s + 1, names[k]) == 0)) {
+            *out = k;
+            return 0;
+        }
+    fprintf(stderr, "%s: %s: '%s' is not an axis (auto, x, y, z, -x, -y, -z)\n", prog, opt, s);
+    return -1;
+}

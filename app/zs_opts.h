@@ -45,6 +45,10 @@ int zs_opt_seq_pattern(const char *prog, const char *opt, const char *pattern);
  * -1 if it does not fit (no message). */
 int zs_opt_seq_path(char *buf, size_t size, const char *pattern, long n);
 
+/* A file's up axis: "auto" 0, "x" 1, "y" 2, "z" 3, "-x" 4, "-y" 5, "-z" 6
+ * (the ZS_UP_* of zs_model.h; "+x" etc. too). 0, or -1 after a message. */
+int zs_opt_up_axis(const char *prog, const char *opt, const char *s, int *out);
+
 /* The choices every renderer front end takes. */
 int zs_opt_mode(const char *prog, const char *s, zs_visibility *out);        /* span|zline */
 int zs_opt_shade(const char *prog, const char *s, zs_shading *out);          /* flat|gouraud */

@@ -144,12 +144,8 @@ static int parse_args(int argc, char **argv, sim_render_opts *o)
             if (m < 0 || zs_opt_doubles(SIM_PROG, "--target", v, o->target, 3) != 0)
                 return SIM_EXIT_USAGE;
         } else if (OPT("--up-axis")) {
-            if (m < 0 || (o->up_axis = zs_model_up_axis(v)) < 0) {
-                if (m >= 0)
-                    fprintf(stderr, "zspan-sim: --up-axis: '%s' is not one of: auto x y z -x -y "
-                                    "-z\n", v);
+            if (m < 0 || zs_opt_up_axis(SIM_PROG, "--up-axis", v, &o->up_axis) != 0)
                 return SIM_EXIT_USAGE;
-            }
         } else if (OPT("--up")) {
             /* An axis name is the file's up axis; three numbers the camera's up. */
             if (m < 0)

@@ -416,6 +416,26 @@ static void test_winding_options(void **state)
     free_image(&flip);
     free_image(&two);
     free_image(&two_z);
+
+    /* panel --mesh: the back face shows only with the options. */
+    {
+        static const char *const opts[] = {"", "--flip-winding", "--two-sided"};
+        image pic[3];
+        char out[300];
+        run_result r;
+        int k;
+        for (k = 0; k < 3; k++) {
+            snprintf(out, sizeof out, "%s/panel%d.png", g_dir, k);
+            run(&r, "'%s' panel --mesh '%s/cw_triangle.obj' %s --shade flat --out '%s' --quiet",
+                SIM, TOOLS_DATA, opts[k], out);
+            STATUS(&r, 0);
+            assert_int_equal(read_png(out, &pic[k]), 0);
+        }
+        assert_false(same_image(&pic[0], &pic[1]));
+        assert_true(same_image(&pic[1], &pic[2]));
+        for (k = 0; k < 3; k++)
+            free_image(&pic[k]);
+    }
 }
 
 static void test_normals_warning(void **state)

@@ -10,6 +10,7 @@
 #        its corpus, then FUZZ_CLI_SMOKE_RUNS more runs from a fixed seed
 #   make fuzz-cli [FUZZ_CLI_SECONDS=600]   the option-parser fuzzer for that long
 #        (logs in build/fuzz/logs/cli.log, crashes in build/fuzz/artifacts/cli/)
+#   make readme-images   the README's pictures again (docs/images/)
 
 CLI_TEST_DIR := $(BUILD)/tests/tools
 CLI_TEST_SIM := $(CLI_TEST_DIR)/test_sim
@@ -110,3 +111,10 @@ test-fuzz-cli-smoke: $(FUZZ_CLI) | deps
 	fi
 
 -include $(shell find $(BUILD)/fuzz/cli -name '*.d' 2>/dev/null)
+
+# The README's pictures (docs/images/): the demo and assimp's duck.
+.PHONY: readme-images
+readme-images: $(SIM) | deps
+	$(SIM) demo --no-compare --out docs/images/demo.png
+	$(SIM) render /usr/share/assimp/models/Collada/duck.dae --fit --rotate -15,-40,0 --eye 0,0,2.6 \
+	    --shade gouraud --background 101830 --out docs/images/duck.png --quiet

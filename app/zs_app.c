@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The frame loop of the panel programs (see zs_app.h). */
 #define _POSIX_C_SOURCE 200809L
 #include "zs_app.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The frame loop of the programs that drive a panel (zspan-sim panel on an
  * emulated panel, zspan-linux, zspan-mcp2210): their common options, the

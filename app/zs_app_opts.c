@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Common options of the panel programs and the panel list (see zs_app.h). */
 #include "zs_app.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The assimp scene walk shared by zspan-sim and zspan-meshc (see zs_import.h). */
 #ifndef _POSIX_C_SOURCE
 #define _POSIX_C_SOURCE 200809L /* sigaction, alarm */

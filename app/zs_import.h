@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The assimp importer of the host programs: walks an imported scene's node
  * hierarchy and hands every mesh over with its node's world transform, and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Mesh files as zs_mesh chunks: loading, fitting, quantisation (see zs_model.h). */
 #include "zs_model.h"
 

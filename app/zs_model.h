@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Mesh files (anything assimp reads, through zs_import.h) as zs_mesh records
  * in memory: int16 positions with a per-mesh Q16.16 scale. Host only; used

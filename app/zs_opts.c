@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Command-line parsing of the host programs (see zs_opts.h). */
 #include "zs_opts.h"
 

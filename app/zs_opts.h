@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Command-line parsing shared by every host program (zspan-sim, zspan-linux,
  * zspan-mcp2210): "--name VALUE" / "--name=VALUE" and typed values. Each

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The demo or mesh scene of the animated programs (see zs_scene.h). */
 #include "zs_scene.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The scene of the animated programs (zspan-sim panel, zspan-linux,
  * zspan-mcp2210): the built-in demo scene, or mesh files fitted to the unit

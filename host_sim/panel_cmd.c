@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan-sim panel: renders frames through a panel driver into an emulated
  * display controller, exactly as they would go down the SPI wire, and shows

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* zspan-sim render: meshes from files (assimp) -> PNG through the core. */
 #include "sim.h"
 

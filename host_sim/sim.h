@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan-sim: shared declarations of the host simulator (not part of the core).
  * Host code may use floating point, malloc and stdio; src/ may not.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* zspan-sim: statistics, files and image capture shared by the subcommands. */
 #include "sim.h"
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # mk/app.mk: tests of the application layer (app/). Included by the top-level
 # Makefile (see docs/BUILD-CONTRACT.md and README.md (Architecture)).
 #

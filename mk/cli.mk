@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # mk/cli.mk: the programs as a user meets them (README.md, "Meshes as they
 # come" and "Command-line programs"). Included by the top-level Makefile
 # (docs/BUILD-CONTRACT.md).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan-meshc: converts any model assimp can read into a C source and header
  * holding a zs_mesh in the core's format (int16 positions + Q16.16 scale,

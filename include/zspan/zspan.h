@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan: a fixed-point, no-malloc visible-surface renderer that draws a 3D
  * triangle scene one row (or band of rows) at a time into a caller's buffer.

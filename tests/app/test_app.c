@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The application layer (app/): option parsing, renderer sizing, the panel
  * programs' command-line driver and the demo scene's frame steps. Built

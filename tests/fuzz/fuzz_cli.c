@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fuzz_cli: the option parser of every program over argv vectors
  * (libFuzzer): zspan-sim demo, render and panel, zspan-meshc, zspan-linux,

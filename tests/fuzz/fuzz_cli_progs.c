@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The programs whose option parsers live next to their main (zspan-meshc,
  * zspan-linux, zspan-mcp2210), compiled into fuzz_cli with main renamed:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fuzz_meshc: the mesh converter's input path (tools/zspan-meshc.c), in
  * process (libFuzzer).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Helpers of the command-line suites (test_sim, test_sim_models): run a
  * program through the shell and keep its exit status and output; read back

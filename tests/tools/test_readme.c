@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_readme: the usage example of README.md ("Using the library"),
  * extracted from the README by the build (mk/cli.mk), compiled with the

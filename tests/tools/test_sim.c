@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_sim: the programs as a new user meets them (issue 12), run as
  * processes: build/zspan-sim, build/zspan-meshc and, when built, the Linux
@@ -154,8 +155,8 @@ static void test_spdx(void **state)
     (void)state;
     run(&r,
         "cd '%s' && for f in $(find src include app host_sim tools drivers ports bench examples "
-        "tests -name '*.[ch]') ; do head -1 \"$f\" | grep -qxF '/* SPDX-License-Identifier: MIT */' "
-        "|| echo \"no SPDX line: $f\"; done; for f in Makefile mk/*.mk $(find tests bench -name "
+        "tests -name '*.[ch]' -o -name '*.ld') ; do head -1 \"$f\" | grep -qxF '/* SPDX-License-Identifier: MIT */' "
+        "|| echo \"no SPDX line: $f\"; done; for f in Makefile .ci/run mk/*.mk $(find tests bench -name "
         "'*.sh'); do head -2 \"$f\" | grep -qxF '# SPDX-License-Identifier: MIT' || echo \"no "
         "SPDX line: $f\"; done",
         TOP);

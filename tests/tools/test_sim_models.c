@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_sim_models: assimp's test models (Debian's assimp-testmodels) through
  * `zspan-sim render`, the program a new user runs first.

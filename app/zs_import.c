@@ -225,3 +225,41 @@ int zs_import_material_color(const struct aiScene *scene, unsigned index, uint32
         return ZS_IMPORT_MAT_DEFAULT;
     return ZS_IMPORT_MAT_FILE;
 }
+
+void zs_import_up_to_y(int up, double v[3])
+{
+    double x = v[0], y = v[1], z = v[2];
+
+    switch (up) {
+    case 3: v[1] = z; v[2] = -y; break;  /* +z up: -90 degrees about x */
+    case 6: v[1] = -z; v[2] = y; break;  /* -z up: +90 about x */
+    case 1: v[0] = -y; v[1] = x; break;  /* +x up: +90 about z */
+    case 4: v[0] = y; v[1] = -x; break;  /* -x up: -90 about z */
+    case 5: v[1] = -y; v[2] = -z; break; /* -y up: 180 about x */
+    default: break;
+    }
+}
+
+int zs_import_file_up(const struct aiScene *scene)
+{
+    const struct aiMetadata *md = scene->mMetaData;
+    int axis = -1, sign = 1;
+    unsigned i;
+
+    if (md == NULL || md->mKeys == NULL || md->mValues == NULL)
+        return 2;
+    for (i = 0; i < md->mNumProperties; i++) {
+        const struct aiMetadataEntry *e = &md->mValues[i];
+        int32_t v;
+        if (e->mType != AI_INT32 || e->mData == NULL)
+            continue;
+        memcpy(&v, e->mData, sizeof v);
+        if (strcmp(md->mKeys[i].data, "UpAxis") == 0 && v >= 0 && v <= 2)
+            axis = (int)v;
+        else if (strcmp(md->mKeys[i].data, "UpAxisSign") == 0)
+            sign = v < 0 ? -1 : 1;
+    }
+    if (axis < 0)
+        return 2;
+    return (sign > 0 ? 1 : 4) + axis;
+}

@@ -55,6 +55,15 @@ void zs_import_position(const zs_import_part *part, unsigned v, double out[3]);
  * through a mirroring transform; (0,0,0) if the file's normal is degenerate. */
 void zs_import_normal(const zs_import_part *part, unsigned v, double out[3]);
 
+/* Up axes: 0 auto (the file's metadata), 1 x, 2 y, 3 z, 4 -x, 5 -y, 6 -z
+ * (zs_opt_up_axis's numbers, ZS_UP_* of zs_model.h). */
+/* Turns a vector of a file whose up axis is `up` (1..6) so that up becomes
+ * +y, by a rotation (lengths and windings are kept). */
+void zs_import_up_to_y(int up, double v[3]);
+/* The up axis the scene's metadata gives ("UpAxis" 0..2 and "UpAxisSign",
+ * as assimp's FBX importer reports them), else 2 (+y). */
+int zs_import_file_up(const struct aiScene *scene);
+
 /* 0..1 channels -> 0x00RRGGBB, clamped, rounded to nearest. */
 uint32_t zs_import_color(double r, double g, double b);
 

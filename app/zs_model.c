@@ -91,47 +91,6 @@ int zs_model_up_axis(const char *s)
     return -1;
 }
 
-/* Turns a file vector so that the file's up axis becomes +y (a rotation). */
-static void up_to_y(int up, double v[3])
-{
-    double x = v[0], y = v[1], z = v[2];
-
-    switch (up) {
-    case ZS_UP_Z: v[1] = z; v[2] = -y; break;              /* -90 degrees about x */
-    case ZS_UP_NEG_Z: v[1] = -z; v[2] = y; break;          /* +90 about x */
-    case ZS_UP_X: v[0] = -y; v[1] = x; break;              /* +90 about z */
-    case ZS_UP_NEG_X: v[0] = y; v[1] = -x; break;          /* -90 about z */
-    case ZS_UP_NEG_Y: v[1] = -y; v[2] = -z; break;         /* 180 about x */
-    default: break;
-    }
-}
-
-/* The up axis of the file's metadata ("UpAxis" 0..2, "UpAxisSign" +-1), or
- * ZS_UP_Y when it says nothing. */
-static int metadata_up(const struct aiScene *ai)
-{
-    const struct aiMetadata *md = ai->mMetaData;
-    int axis = -1, sign = 1;
-    unsigned i;
-
-    if (md == NULL || md->mKeys == NULL || md->mValues == NULL)
-        return ZS_UP_Y;
-    for (i = 0; i < md->mNumProperties; i++) {
-        const struct aiMetadataEntry *e = &md->mValues[i];
-        int32_t v;
-        if (e->mType != AI_INT32 || e->mData == NULL)
-            continue;
-        memcpy(&v, e->mData, sizeof v);
-        if (strcmp(md->mKeys[i].data, "UpAxis") == 0 && v >= 0 && v <= 2)
-            axis = (int)v;
-        else if (strcmp(md->mKeys[i].data, "UpAxisSign") == 0)
-            sign = v < 0 ? -1 : 1;
-    }
-    if (axis < 0)
-        return ZS_UP_Y;
-    return sign > 0 ? ZS_UP_X + axis : ZS_UP_NEG_X + axis;
-}
-
 static int chunk_alloc(zs_model_chunk *c, uint32_t max_v, uint32_t max_t, int normals, int colors)
 {
     c->pos = malloc((size_t)max_v * 3 * sizeof *c->pos);
@@ -250,7 +209,7 @@ static int add_mesh(void *user, const zs_import_part *part)
                 int a;
                 lc->scene->total_verts++;
                 zs_import_position(part, src, p);
-                up_to_y(lc->up, p);
+                zs_import_up_to_y(lc->up, p);
                 for (a = 0; a < 3; a++) {
                     if (!isfinite(p[a])) {
                         fprintf(stderr, "%s: %s: vertex %u is not finite\n", lc->o->prog,
@@ -260,7 +219,7 @@ static int add_mesh(void *user, const zs_import_part *part)
                 }
                 if (normals) {
                     zs_import_normal(part, src, &c->nrm[3 * d]);
-                    up_to_y(lc->up, &c->nrm[3 * d]);
+                    zs_import_up_to_y(lc->up, &c->nrm[3 * d]);
                     if (flip)
                         for (a = 0; a < 3; a++)
                             c->nrm[3 * d + (uint32_t)a] = -c->nrm[3 * d + (uint32_t)a];
@@ -383,9 +342,9 @@ static int load_zsm(zs_model *scene, const char *path, const zs_model_opts *o, F
         for (k = 0; k < vc * 3u; k++)
             c->nrm[k] = (double)(int16_t)get_le(buf + off + 2u * k, 2) / 16384.0;
     for (k = 0; k < vc; k++) {
-        up_to_y(up, &c->pos[3 * k]);
+        zs_import_up_to_y(up, &c->pos[3 * k]);
         if (c->nrm != NULL) {
-            up_to_y(up, &c->nrm[3 * k]);
+            zs_import_up_to_y(up, &c->nrm[3 * k]);
             if (o->flip_winding)
                 for (a = 0; a < 3; a++)
                     c->nrm[3 * k + (uint32_t)a] = -c->nrm[3 * k + (uint32_t)a];
@@ -540,7 +499,7 @@ int zs_model_load_opts(zs_model *scene, const char *path, const zs_model_opts *o
     lc.path = path;
     lc.o = o;
     lc.want_normals = o->want_normals;
-    lc.up = o->up == ZS_UP_AUTO ? metadata_up(ai) : o->up;
+    lc.up = o->up == ZS_UP_AUTO ? zs_import_file_up(ai) : o->up;
     lc.file_normals = file_normals;
     rc = zs_import_walk(ai, add_mesh, &lc);
     if (rc == ZS_IMPORT_ERR_MESH || rc == ZS_IMPORT_ERR_DEPTH)

@@ -12,6 +12,7 @@
 #   make fuzz-cli [FUZZ_CLI_SECONDS=600]   the option-parser fuzzer for that long
 #        (logs in build/fuzz/logs/cli.log, crashes in build/fuzz/artifacts/cli/)
 #   make readme-images   the README's pictures again (docs/images/)
+#   make fuzz-cli-merge  folds build/fuzz/corpus/cli into tests/fuzz/corpus/cli
 
 CLI_TEST_DIR := $(BUILD)/tests/tools
 CLI_TEST_SIM := $(CLI_TEST_DIR)/test_sim
@@ -119,3 +120,10 @@ readme-images: $(SIM) | deps
 	$(SIM) demo --no-compare --out docs/images/demo.png
 	$(SIM) render /usr/share/assimp/models/Collada/duck.dae --fit --rotate -15,-40,0 --eye 0,0,2.6 \
 	    --shade gouraud --background 101830 --out docs/images/duck.png --quiet
+
+# Folds build/fuzz/corpus/cli into the checked-in corpus (inputs that add coverage).
+.PHONY: fuzz-cli-merge
+fuzz-cli-merge: $(FUZZ_CLI) | deps
+	@mkdir -p $(BUILD)/fuzz/corpus/cli
+	@$(FUZZ_CLI) -close_fd_mask=3 -merge=1 -max_len=512 tests/fuzz/corpus/cli \
+	    $(BUILD)/fuzz/corpus/cli 2>&1 | grep -E 'MERGE-OUTER: [0-9]+ new files'

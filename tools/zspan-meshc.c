@@ -63,6 +63,7 @@ typedef struct options {
     int info_only;
     int quiet;
     int zsm;                 /* --format zsm: BASE.zsm instead of BASE.c + BASE.h */
+    int up_axis;             /* the file's up axis (zs_opt_up_axis), 0 = its metadata */
     long mem_limit_mb;       /* address-space limit while importing; 0 = none, -1 = auto */
 } options;
 
@@ -231,14 +232,18 @@ static int collect_mesh(void *user, const zs_import_part *part)
     size_t base = m->nv;
     unsigned vi, f;
     uint32_t mcol = 0xFFFFFFu;
+    int up = o->up_axis ? o->up_axis : zs_import_file_up(part->scene);
 
     (void)zs_import_material_color(part->scene, me->mMaterialIndex, &mcol);
     for (vi = 0; vi < me->mNumVertices; vi++) {
         vert v;
         memset(&v, 0, sizeof v);
         zs_import_position(part, vi, v.p);
-        if (o->normals == NRM_FILE && me->mNormals)
+        zs_import_up_to_y(up, v.p);
+        if (o->normals == NRM_FILE && me->mNormals) {
             zs_import_normal(part, vi, v.n);
+            zs_import_up_to_y(up, v.n);
+        }
         if (o->colors == COL_VERTEX) {
             if (me->mColors[0]) {
                 v.c[0] = me->mColors[0][vi].r;
@@ -1139,6 +1144,8 @@ static void usage(FILE *f)
         "      --no-merge        keep the importer's vertices (default: merge vertices\n"
         "                        with identical positions and output attributes)\n"
         "      --flip-winding    reverse every triangle (front faces must be CCW)\n"
+        "      --up-axis AXIS    the file's up axis (x, y, z, -x, -y, -z): turned to +y\n"
+        "                        (default auto: the file's metadata, e.g. FBX, else y)\n"
         "      --lenient         convert even if the importer reported errors\n"
         "      --info            print statistics only; write nothing\n"
         "      --mem-limit MB    address-space limit while importing (default 2048 MB +\n"
@@ -1208,6 +1215,9 @@ static void parse_args(int argc, char **argv, options *o)
             exit(0);
         } else if (zs_opt_version(a, g_prog)) {
             exit(0);
+        } else if (str_arg(argc, argv, &i, "--up-axis", NULL, &v)) {
+            if (zs_opt_up_axis(OPT_PROG, "--up-axis", v, &o->up_axis) != 0)
+                exit(EXIT_USAGE);
         } else if (str_arg(argc, argv, &i, "--format", NULL, &v)) {
             static const char *const formats[] = {"c", "zsm"};
             if (zs_opt_choice(OPT_PROG, "--format", v, formats, 2, &k) != 0)

@@ -495,6 +495,26 @@ static void test_up_axis(void **state)
     snprintf(args, sizeof args, "'%s/tall_z.obj' --fit --up-axis z", TOOLS_DATA);
     render_ids(args, "standing2", &standing2);
     assert_true(same_image(&standing, &standing2));
+    free_image(&standing2);
+    /* A file that says it is Z-up (Collada's up_axis) stands by default. */
+    snprintf(args, sizeof args, "'%s/tall_z_up.dae' --fit", TOOLS_DATA);
+    render_ids(args, "standing3", &standing2);
+    extent(&standing2, &w, &h);
+    if (!(h > 3 * w))
+        fail_msg("Z_UP Collada: the post is %dx%d pixels, not standing", w, h);
+    free_image(&standing2);
+    /* The converter turns it too: its binary mesh stands as it is. */
+    {
+        run_result r;
+        run(&r, "'%s' -q --up-axis z -o '%s/post' --format zsm '%s/tall_z.obj'", MESHC, g_dir,
+            TOOLS_DATA);
+        STATUS(&r, 0);
+        snprintf(args, sizeof args, "'%s/post.zsm' --fit", g_dir);
+        render_ids(args, "standing4", &standing2);
+        extent(&standing2, &w, &h);
+        if (!(h > 3 * w))
+            fail_msg("zspan-meshc --up-axis z: the post is %dx%d pixels", w, h);
+    }
     free_image(&lying);
     free_image(&standing);
     free_image(&standing2);

@@ -78,19 +78,6 @@ zs_model_opts zs_model_opts_default(void)
     return o;
 }
 
-int zs_model_up_axis(const char *s)
-{
-    static const char *const names[] = {"auto", "x", "y", "z", "-x", "-y", "-z"};
-    int k;
-
-    for (k = 0; k < 7; k++)
-        if (strcmp(s, names[k]) == 0)
-            return k;
-    if (strcmp(s, "+x") == 0 || strcmp(s, "+y") == 0 || strcmp(s, "+z") == 0)
-        return ZS_UP_X + (s[1] - 'x');
-    return -1;
-}
-
 static int chunk_alloc(zs_model_chunk *c, uint32_t max_v, uint32_t max_t, int normals, int colors)
 {
     c->pos = malloc((size_t)max_v * 3 * sizeof *c->pos);

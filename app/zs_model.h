@@ -42,8 +42,7 @@ typedef struct zs_model {
  * points along +y, the world's up. AUTO: what the file's metadata says
  * (assimp's "UpAxis"/"UpAxisSign", e.g. FBX), else +y. */
 enum { ZS_UP_AUTO, ZS_UP_X, ZS_UP_Y, ZS_UP_Z, ZS_UP_NEG_X, ZS_UP_NEG_Y, ZS_UP_NEG_Z };
-/* "x", "y", "z", "-x", "-y", "-z" or "auto" -> ZS_UP_*; -1 for anything else. */
-int zs_model_up_axis(const char *s);
+/* (zs_opt_up_axis parses them from the command line.) */
 
 typedef struct zs_model_opts {
     const char *prog;   /* message prefix, e.g. "zspan-sim" */

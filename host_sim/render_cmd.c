@@ -151,10 +151,17 @@ static int parse_args(int argc, char **argv, sim_render_opts *o)
             /* An axis name is the file's up axis; three numbers the camera's up. */
             if (m < 0)
                 return SIM_EXIT_USAGE;
-            if (strchr(v, ',') == NULL && zs_model_up_axis(v) > 0)
-                o->up_axis = zs_model_up_axis(v);
-            else if (zs_opt_doubles(SIM_PROG, "--up", v, o->up, 3) != 0)
+            if (strchr(v, ',') == NULL) {
+                if (zs_opt_up_axis(SIM_PROG, "--up (an axis, or x,y,z for the camera)", v,
+                                   &o->up_axis) != 0)
+                    return SIM_EXIT_USAGE;
+                if (o->up_axis == 0) {
+                    fprintf(stderr, "zspan-sim: --up auto: say --up-axis auto\n");
+                    return SIM_EXIT_USAGE;
+                }
+            } else if (zs_opt_doubles(SIM_PROG, "--up", v, o->up, 3) != 0) {
                 return SIM_EXIT_USAGE;
+            }
         } else if (OPT("--rotate")) {
             if (m < 0 || zs_opt_doubles(SIM_PROG, "--rotate", v, o->rot, 3) != 0)
                 return SIM_EXIT_USAGE;

@@ -620,6 +620,8 @@ static void test_messages(void **state)
         {"--size 2000x10", "--size: 2000 is outside 1..1024"},
         {"--light 0,0,0", "--light"},
         {"--up-axis w", "--up-axis"},
+        {"--up w", "'w' is not an axis"},
+        {"--up auto", "--up-axis auto"},
         {"--band 0", "--band"},
     };
     run_result r;

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # zspan top-level Makefile (GNU make). See docs/BUILD-CONTRACT.md.
 #
 #   make          build/libzspan.a and build/libzspan_drivers.a with only a C compiler (installs
@@ -199,10 +200,11 @@ $(BUILD)/tests/core/%.o: tests/core/%.c | deps
 	@mkdir -p $(@D)
 	$(CC) $(CORE_TEST_CFLAGS) -MMD -MP -c $< -o $@
 
-# A suite that needs more libraries names them on its first line: /* LIBS: -lfoo */
+# A suite that needs more libraries names them on its first or second line (after the
+# SPDX line): /* LIBS: -lfoo */
 $(BUILD)/tests/core/%: $(BUILD)/tests/core/%.o $(CORE_TEST_COMMON_OBJS) $(ASAN_LIB)
 	$(CC) $(CORE_TEST_CFLAGS) -o $@ $< $(CORE_TEST_COMMON_OBJS) $(ASAN_LIB) $(CORE_TEST_LIBS) \
-	    $$(sed -n '1s|^/\* LIBS: \(.*\) \*/$$|\1|p' tests/core/$*.c)
+	    $$(sed -n '1,2s|^/\* LIBS: \(.*\) \*/$$|\1|p' tests/core/$*.c)
 
 .PRECIOUS: $(BUILD)/tests/core/%.o $(BUILD)/tests/core/common/%.o
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The built-in demo scene (see demo_scene.h). Integer only: positions are
  * int16 in units of 1/4096 (mesh scale 16 in Q16.16) unless said otherwise.

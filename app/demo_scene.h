@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The built-in demo scene of zspan-sim: a tilted torus (smooth normals) that
  * sinks into a checkered ground, two cubes that cut into each other, a cube the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The frame loop of the panel programs (see zs_app.h). */
 #define _POSIX_C_SOURCE 200809L
 #include "zs_app.h"
@@ -148,7 +149,8 @@ int zs_app_run(const zs_app_opts *o, zs_bus *bus, const zs_app_port *port, const
                fmt == ZS_FMT_RGB565_BE ? "RGB565" : "RGB666", port->name,
                (now_s() - t_start) * 1e3);
 
-    if (zs_scene_load(&sc, o->meshes, o->nmeshes, o->shade, prog) != 0)
+    if (zs_scene_load_meshes(&sc, o->meshes, o->nmeshes, o->shade, o->flip_winding, o->two_sided,
+                             o->up_axis, prog) != 0)
         goto done;
     cfg = zs_app_config(lcd.width, lcd.height, sc.max_tris, 0, 0);
     arena = zs_app_renderer(&r, &cfg, &arena_size, prog);

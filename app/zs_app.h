@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The frame loop of the programs that drive a panel (zspan-sim panel on an
  * emulated panel, zspan-linux, zspan-mcp2210): their common options, the
@@ -33,6 +34,9 @@ typedef struct zs_app_opts {
     int list;
     long backlight;       /* 0..255 */
     const char *dump;     /* write the last frame as sent (wire format, raw) */
+    int flip_winding;     /* --mesh files with clockwise triangles */
+    int two_sided;        /* draw the meshes' back faces too */
+    int up_axis;          /* the mesh files' up axis (zs_opt_up_axis) */
 } zs_app_opts;
 
 /* What the loop reports after each frame. */
@@ -78,6 +82,11 @@ typedef struct zs_app_cli {
  * bad command line (2) or no memory (1); then o is already freed. */
 int zs_app_parse(zs_app_opts *o, int argc, char **argv, const zs_app_cli *cli);
 
+/* Checks what the options name before any device is opened: the panel
+ * exists and takes the wire format. 0, or -1 after a message naming the
+ * option (zs_app_parse calls it). */
+int zs_app_check(const zs_app_opts *o, const char *prog);
+
 /* Defaults; argc bounds the number of --mesh options. */
 void zs_app_defaults(zs_app_opts *o, int argc);
 /* Matches one common option at argv[*i]: 1 consumed (value too), 0 not a
@@ -91,6 +100,9 @@ void zs_app_free(zs_app_opts *o);
     "  --rotation 0..3       quarter turns clockwise (default 0)\n"                          \
     "  --format rgb565|rgb666  wire pixel format (default rgb565; ili9488: rgb666)\n"        \
     "  --mesh FILE           a mesh file (assimp formats; repeatable) instead of the demo\n" \
+    "  --flip-winding, --two-sided, --up-axis AXIS\n"                                    \
+    "                        the mesh files' triangles are clockwise; draw back faces;\n" \
+    "                        their up axis (x, y, z, -x, -y, -z; default auto)\n"          \
     "  --frames N            frames to send (default 1; 0 = until Ctrl-C)\n"                 \
     "  --start N             first demo frame (default 0)\n"                                 \
     "  --spin DEG            turn per frame (demo: camera orbit, multiples of 3; default 3)\n" \
@@ -100,7 +112,8 @@ void zs_app_free(zs_app_opts *o);
     "  --partial             after the first frame send only the rows that changed\n"        \
     "                        (narrowed to the changed columns)\n"                            \
     "  --brightness 0..255   backlight level (GPIO backlight: 0 off, else on; default 255)\n" \
-    "  --quiet               only errors\n"
+    "  --quiet               only errors\n"                                            \
+    "  --help, --version\n"
 /* The panels the drivers know, with sizes, clocks and wire formats. */
 void zs_app_list_panels(FILE *f);
 

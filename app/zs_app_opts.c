@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Common options of the panel programs and the panel list (see zs_app.h). */
 #include "zs_app.h"
 
@@ -33,6 +34,10 @@ int zs_app_option(int argc, char **argv, int *i, zs_app_opts *o, const char *pro
     if (strcmp(a, "--partial") == 0) { o->partial = 1; return 1; }
     if (strcmp(a, "--quiet") == 0) { o->quiet = 1; return 1; }
     if (strcmp(a, "--list") == 0) { o->list = 1; return 1; }
+    if (strcmp(a, "--flip-winding") == 0) { o->flip_winding = 1; return 1; }
+    if (strcmp(a, "--two-sided") == 0) { o->two_sided = 1; return 1; }
+    if ((m = zs_opt_value(argc, argv, i, "--up-axis", &v, prog)) != 0)
+        return m < 0 || zs_opt_up_axis(prog, "--up-axis", v, &o->up_axis) != 0 ? -1 : 1;
 #define LONG_OPT(name, lo, hi, field)                                                          \
     if ((m = zs_opt_long_at(argc, argv, i, name, lo, hi, &o->field, prog)) != 0)               \
         return m;
@@ -84,6 +89,10 @@ int zs_app_parse(zs_app_opts *o, int argc, char **argv, const zs_app_cli *cli)
             zs_app_free(o);
             return 0;
         }
+        if (zs_opt_version(argv[i], cli->prog)) {
+            zs_app_free(o);
+            return 0;
+        }
         m = zs_app_option(argc, argv, &i, o, cli->prog);
         if (m == 0)
             m = cli->option(cli->cfg, argc, argv, &i);
@@ -99,7 +108,31 @@ int zs_app_parse(zs_app_opts *o, int argc, char **argv, const zs_app_cli *cli)
         zs_app_free(o);
         return 0;
     }
+    if (zs_app_check(o, cli->prog) != 0) {
+        zs_app_free(o);
+        return 2;
+    }
     return ZS_APP_PARSED;
+}
+
+int zs_app_check(const zs_app_opts *o, const char *prog)
+{
+    const zs_panel_desc *d = zs_panel_find(o->panel);
+    zs_format fmt;
+
+    if (d == NULL) {
+        fprintf(stderr, "%s: --panel: unknown panel '%s' (--list shows them)\n", prog, o->panel);
+        return -1;
+    }
+    fmt = o->format_set ? o->format
+                        : (zs_panel_bytes_per_pixel(d, ZS_FMT_RGB565_BE) ? ZS_FMT_RGB565_BE
+                                                                         : ZS_FMT_RGB666);
+    if (zs_panel_bytes_per_pixel(d, fmt) == 0) {
+        fprintf(stderr, "%s: --format: %s does not take %s over SPI\n", prog, d->name,
+                fmt == ZS_FMT_RGB565_BE ? "rgb565" : "rgb666");
+        return -1;
+    }
+    return 0;
 }
 
 void zs_app_list_panels(FILE *f)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Renderer sizing of the host programs (see zs_arena.h). */
 #include "zs_arena.h"
 

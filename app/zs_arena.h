@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Renderer sizing of the host programs: pool capacities from what a scene
  * submits, and the renderer set up in a malloc'd arena of that size.

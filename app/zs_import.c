@@ -1,9 +1,79 @@
+/* SPDX-License-Identifier: MIT */
 /* The assimp scene walk shared by zspan-sim and zspan-meshc (see zs_import.h). */
+#ifndef _POSIX_C_SOURCE
+#define _POSIX_C_SOURCE 200809L /* sigaction, alarm */
+#endif
 #include "zs_import.h"
 
 #include <assimp/material.h>
 #include <math.h>
+#include <signal.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
+
+/* What the alarm handler prints: async-signal-safe writes of saved strings. */
+static const char *g_guard_prog = "";
+static const char *g_guard_path = "";
+static int g_guard_exit = 1;
+static char g_guard_secs[12];
+
+static void guard_write(const char *s)
+{
+    (void)!write(2, s, strlen(s));
+}
+
+static void on_import_timeout(int sig)
+{
+    (void)sig;
+    guard_write(g_guard_prog);
+    guard_write(": ");
+    guard_write(g_guard_path);
+    guard_write(": the model importer did not finish in ");
+    guard_write(g_guard_secs);
+    guard_write(" s (a malformed file?); $ZSPAN_IMPORT_SECONDS sets the limit\n");
+    _exit(g_guard_exit);
+}
+
+unsigned zs_import_seconds(void)
+{
+    const char *env = getenv("ZSPAN_IMPORT_SECONDS");
+    char *end = NULL;
+    unsigned long v;
+
+    if (env == NULL)
+        env = getenv("ZSPAN_MESHC_IMPORT_SECONDS"); /* the converter's older name */
+    if (env == NULL)
+        return ZS_IMPORT_SECONDS;
+    v = strtoul(env, &end, 10);
+    return end != env && *end == '\0' && v >= 1 && v <= 86400 ? (unsigned)v : ZS_IMPORT_SECONDS;
+}
+
+void zs_import_guard_begin(const char *prog, const char *path, int exit_code)
+{
+    unsigned secs = zs_import_seconds(), k = sizeof g_guard_secs - 1;
+    struct sigaction sa;
+
+    g_guard_prog = prog;
+    g_guard_path = path;
+    g_guard_exit = exit_code;
+    g_guard_secs[k] = '\0';
+    do {
+        g_guard_secs[--k] = (char)('0' + secs % 10u);
+        secs /= 10u;
+    } while (secs != 0 && k > 0);
+    memmove(g_guard_secs, g_guard_secs + k, sizeof g_guard_secs - k);
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_import_timeout;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGALRM, &sa, NULL);
+    alarm(zs_import_seconds());
+}
+
+void zs_import_guard_end(void)
+{
+    alarm(0);
+}
 
 static void affine_from_ai(const struct aiMatrix4x4 *m, double a[3][4])
 {
@@ -154,4 +224,42 @@ int zs_import_material_color(const struct aiScene *scene, unsigned index, uint32
         strcmp(name.data, AI_DEFAULT_MATERIAL_NAME) == 0)
         return ZS_IMPORT_MAT_DEFAULT;
     return ZS_IMPORT_MAT_FILE;
+}
+
+void zs_import_up_to_y(int up, double v[3])
+{
+    double x = v[0], y = v[1], z = v[2];
+
+    switch (up) {
+    case 3: v[1] = z; v[2] = -y; break;  /* +z up: -90 degrees about x */
+    case 6: v[1] = -z; v[2] = y; break;  /* -z up: +90 about x */
+    case 1: v[0] = -y; v[1] = x; break;  /* +x up: +90 about z */
+    case 4: v[0] = y; v[1] = -x; break;  /* -x up: -90 about z */
+    case 5: v[1] = -y; v[2] = -z; break; /* -y up: 180 about x */
+    default: break;
+    }
+}
+
+int zs_import_file_up(const struct aiScene *scene)
+{
+    const struct aiMetadata *md = scene->mMetaData;
+    int axis = -1, sign = 1;
+    unsigned i;
+
+    if (md == NULL || md->mKeys == NULL || md->mValues == NULL)
+        return 2;
+    for (i = 0; i < md->mNumProperties; i++) {
+        const struct aiMetadataEntry *e = &md->mValues[i];
+        int32_t v;
+        if (e->mType != AI_INT32 || e->mData == NULL)
+            continue;
+        memcpy(&v, e->mData, sizeof v);
+        if (strcmp(md->mKeys[i].data, "UpAxis") == 0 && v >= 0 && v <= 2)
+            axis = (int)v;
+        else if (strcmp(md->mKeys[i].data, "UpAxisSign") == 0)
+            sign = v < 0 ? -1 : 1;
+    }
+    if (axis < 0)
+        return 2;
+    return (sign > 0 ? 1 : 4) + axis;
 }

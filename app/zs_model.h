@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Mesh files (anything assimp reads, through zs_import.h) as zs_mesh records
  * in memory: int16 positions with a per-mesh Q16.16 scale. Host only; used
@@ -37,6 +38,36 @@ typedef struct zs_model {
     uint32_t total_verts;
 } zs_model;
 
+/* The file's up axis (zs_model_opts.up): the model is turned so that it
+ * points along +y, the world's up. AUTO: what the file's metadata says
+ * (assimp's "UpAxis"/"UpAxisSign", e.g. FBX), else +y. */
+enum { ZS_UP_AUTO, ZS_UP_X, ZS_UP_Y, ZS_UP_Z, ZS_UP_NEG_X, ZS_UP_NEG_Y, ZS_UP_NEG_Z };
+/* (zs_opt_up_axis parses them from the command line.) */
+
+typedef struct zs_model_opts {
+    const char *prog;   /* message prefix, e.g. "zspan-sim" */
+    int want_normals;   /* as zs_model_load */
+    int flip_winding;   /* the file's triangles are clockwise: reverse them */
+    int up;             /* ZS_UP_* */
+    int quiet;          /* no warnings */
+} zs_model_opts;
+
+/* zs_model_opts with prog "zspan-sim", up AUTO, nothing else. */
+zs_model_opts zs_model_opts_default(void);
+
+/* Signature of the converter's binary mesh (zspan-meshc --format zsm): a file
+ * that starts with it is read directly, without assimp. Layout, little-endian:
+ * magic (8 bytes), u32 flags (ZS_ZSM_*), i32 scale (Q16.16), u32 colour,
+ * u16 vertex count, u16 triangle count, then i16 positions[3 V], u16
+ * indices[3 T], and as the flags say u32 face colours[T], u32 vertex
+ * colours[V], i16 face normals[3 T], i16 vertex normals[3 V] (Q1.14). */
+#define ZS_ZSM_MAGIC "ZSMESH1\n"
+#define ZS_ZSM_FACE_COLORS 1u
+#define ZS_ZSM_VERTEX_COLORS 2u
+#define ZS_ZSM_FACE_NORMALS 4u
+#define ZS_ZSM_VERTEX_NORMALS 8u
+#define ZS_ZSM_HEADER_BYTES 24u
+
 /* Loads a file with assimp (triangulated, identical vertices joined; points
  * and lines are skipped) and appends its triangles to the scene, in the order
  * of the node hierarchy (depth first), each node's meshes in order, faces in
@@ -44,6 +75,20 @@ typedef struct zs_model {
  * absent), 2 smooth normals generated even when the file has its own.
  * Returns 0, or -1 with a message on stderr. */
 int zs_model_load(zs_model *scene, const char *path, int want_normals);
+/* The same with options. A directory, an unreadable file and a file without
+ * triangles are errors; an import that runs longer than zs_import_seconds()
+ * stops the program (zs_import_guard_begin, exit status 1). Warns (unless
+ * quiet) when the file's normals point against the winding of most
+ * triangles. Files starting with ZS_ZSM_MAGIC are read as the converter's
+ * binary meshes (up and flip_winding apply to them too). */
+int zs_model_load_opts(zs_model *scene, const char *path, const zs_model_opts *o);
+
+/* Adds a reversed copy of every chunk (indices reversed, normals negated,
+ * same colours): drawn after the originals, it shows the back faces, so the
+ * model is two-sided (the tags of the copies follow all the originals).
+ * Call after zs_model_quantize and after the colours are set. Returns 0, or
+ * -1 when out of memory. */
+int zs_model_add_back_faces(zs_model *scene);
 
 /* Axis-aligned bounds over every triangle vertex. Returns 0 when empty. */
 int zs_model_bounds(const zs_model *scene, double lo[3], double hi[3]);

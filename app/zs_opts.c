@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Command-line parsing of the host programs (see zs_opts.h). */
 #include "zs_opts.h"
 
@@ -214,3 +215,137 @@ TWO_WORDS(zs_opt_mode, zs_visibility, "--mode", "span", ZS_MODE_SPAN, "zline", Z
 TWO_WORDS(zs_opt_shade, zs_shading, "--shade", "flat", ZS_SHADE_FLAT, "gouraud", ZS_SHADE_GOURAUD)
 TWO_WORDS(zs_opt_wire_format, zs_format, "--format", "rgb565", ZS_FMT_RGB565_BE, "rgb666",
           ZS_FMT_RGB666)
+
+int zs_opt_version(const char *arg, const char *prog)
+{
+    if (strcmp(arg, "--version") != 0)
+        return 0;
+    printf("%s %s\n", prog, ZSPAN_VERSION_STRING);
+    return 1;
+}
+
+/* Finds the one conversion of a pattern: *at its '%', *len its length.
+ * Returns 0, or -1 with *why set. */
+static int seq_scan(const char *p, size_t *at, size_t *len, const char **why)
+{
+    size_t i = 0, found = 0;
+    int n = 0;
+
+    *why = NULL;
+    while (p[i] != '\0') {
+        size_t s = i, w;
+        if (p[i] != '%') {
+            i++;
+            continue;
+        }
+        if (p[i + 1] == '%') {
+            i += 2;
+            continue;
+        }
+        i++;
+        while (p[i] != '\0' && strchr("0-+ ", p[i]) != NULL)
+            i++;
+        for (w = 0; isdigit((unsigned char)p[i]); w++)
+            i++;
+        if (w > 3) {
+            *why = "a field width of more than 3 digits";
+            return -1;
+        }
+        if (p[i] == '.') {
+            i++;
+            for (w = 0; isdigit((unsigned char)p[i]); w++)
+                i++;
+            if (w > 3) {
+                *why = "a precision of more than 3 digits";
+                return -1;
+            }
+        }
+        if (p[i] != 'd' && p[i] != 'i' && p[i] != 'u') {
+            *why = "a conversion other than %d, %i or %u (or a length modifier)";
+            return -1;
+        }
+        i++;
+        n++;
+        found = s;
+        *len = i - s;
+    }
+    if (n != 1) {
+        *why = n == 0 ? "no %d for the frame number" : "more than one conversion";
+        return -1;
+    }
+    *at = found;
+    return 0;
+}
+
+int zs_opt_seq_pattern(const char *prog, const char *opt, const char *pattern)
+{
+    size_t at, len;
+    const char *why;
+
+    if (strlen(pattern) > 4000) {
+        fprintf(stderr, "%s: %s: the pattern is too long (%lu characters, at most 4000)\n", prog,
+                opt, (unsigned long)strlen(pattern));
+        return -1;
+    }
+    if (seq_scan(pattern, &at, &len, &why) != 0) {
+        fprintf(stderr,
+                "%s: %s: '%s' has %s: it needs exactly one integer conversion such as %%d or "
+                "%%03d (%%%% for a plain %%)\n",
+                prog, opt, pattern, why);
+        return -1;
+    }
+    return 0;
+}
+
+int zs_opt_seq_path(char *buf, size_t size, const char *pattern, long n)
+{
+    char spec[16];
+    size_t at, len, k, o = 0;
+    const char *why;
+    int w;
+
+    if (size == 0 || seq_scan(pattern, &at, &len, &why) != 0 || len >= sizeof spec)
+        return -1;
+    memcpy(spec, pattern + at, len);
+    spec[len] = '\0';
+    /* The text around the conversion, with %% made %; the conversion alone
+     * is the format string (checked above: one int conversion). */
+    for (k = 0; k < at; k++) {
+        if (o + 1 >= size)
+            return -1;
+        buf[o++] = pattern[k];
+        if (pattern[k] == '%')
+            k++;
+    }
+    if (n < 0 || n > 2147483647L)
+        return -1;
+    w = spec[len - 1] == 'u' ? snprintf(buf + o, size - o, spec, (unsigned)n)
+                             : snprintf(buf + o, size - o, spec, (int)n);
+    if (w < 0 || (size_t)w >= size - o)
+        return -1;
+    o += (size_t)w;
+    for (k = at + len; pattern[k] != '\0'; k++) {
+        if (o + 1 >= size)
+            return -1;
+        buf[o++] = pattern[k];
+        if (pattern[k] == '%')
+            k++;
+    }
+    buf[o] = '\0';
+    return 0;
+}
+
+int zs_opt_up_axis(const char *prog, const char *opt, const char *s, int *out)
+{
+    static const char *const names[] = {"auto", "x", "y", "z", "-x", "-y", "-z"};
+    int k;
+
+    for (k = 0; k < 7; k++)
+        if (strcmp(s, names[k]) == 0 ||
+            (k >= 1 && k <= 3 && s[0] == '+' && strcmp(s + 1, names[k]) == 0)) {
+            *out = k;
+            return 0;
+        }
+    fprintf(stderr, "%s: %s: '%s' is not an axis (auto, x, y, z, -x, -y, -z)\n", prog, opt, s);
+    return -1;
+}

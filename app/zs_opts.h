@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Command-line parsing shared by every host program (zspan-sim, zspan-linux,
  * zspan-mcp2210): "--name VALUE" / "--name=VALUE" and typed values. Each
@@ -32,6 +33,22 @@ int zs_opt_choice(const char *prog, const char *opt, const char *s, const char *
                   int n, int *out);
 /* A decimal value -> Q16.16, rounded to nearest; -1 outside the Q16.16 range. */
 int zs_opt_fixed(const char *prog, const char *what, double v, zs_fixed *out);
+
+/* "--version": prints "PROG VERSION" (ZSPAN_VERSION_STRING) on stdout and
+ * returns 1; any other argument: 0. */
+int zs_opt_version(const char *arg, const char *prog);
+
+/* A file-name pattern with exactly one integer conversion (%d, %i or %u with
+ * optional flags 0-+ space, width of up to 3 digits and precision; "%%" is a plain %), e.g.
+ * out/f_%03d.png. 0, or -1 after a message naming opt. */
+int zs_opt_seq_pattern(const char *prog, const char *opt, const char *pattern);
+/* The pattern (checked by zs_opt_seq_pattern) with n in it, into buf. 0, or
+ * -1 if it does not fit (no message). */
+int zs_opt_seq_path(char *buf, size_t size, const char *pattern, long n);
+
+/* A file's up axis: "auto" 0, "x" 1, "y" 2, "z" 3, "-x" 4, "-y" 5, "-z" 6
+ * (the ZS_UP_* of zs_model.h; "+x" etc. too). 0, or -1 after a message. */
+int zs_opt_up_axis(const char *prog, const char *opt, const char *s, int *out);
 
 /* The choices every renderer front end takes. */
 int zs_opt_mode(const char *prog, const char *s, zs_visibility *out);        /* span|zline */

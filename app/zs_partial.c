@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Partial updates of the animated programs (see zs_partial.h). */
 #include "zs_partial.h"
 

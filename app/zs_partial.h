@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Partial updates of the animated programs (--partial): only the parts of a
  * frame that changed since the last one go to the panel.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The demo or mesh scene of the animated programs (see zs_scene.h). */
 #include "zs_scene.h"
 
@@ -8,6 +9,12 @@
 
 int zs_scene_load(zs_scene *s, const char *const *meshes, int nmeshes, zs_shading shade,
                   const char *prog)
+{
+    return zs_scene_load_meshes(s, meshes, nmeshes, shade, 0, 0, 0, prog);
+}
+
+int zs_scene_load_meshes(zs_scene *s, const char *const *meshes, int nmeshes, zs_shading shade,
+                         int flip, int two_sided, int up_axis, const char *prog)
 {
     memset(s, 0, sizeof *s);
     if (nmeshes == 0) {
@@ -23,20 +30,35 @@ int zs_scene_load(zs_scene *s, const char *const *meshes, int nmeshes, zs_shadin
 #ifdef ZS_APP_NO_MESH
     (void)meshes;
     (void)shade;
+    (void)flip;
+    (void)two_sided;
+    (void)up_axis;
     fprintf(stderr, "%s: built without mesh loading (assimp)\n", prog);
     return -1;
 #else
     {
+        zs_model_opts mo = zs_model_opts_default();
+        unsigned long limit = ZS_MAX_TRIANGLES / (two_sided ? 6u : 3u);
         int f;
+        mo.prog = prog;
+        mo.want_normals = shade == ZS_SHADE_GOURAUD;
+        mo.flip_winding = flip;
+        mo.up = up_axis;
         for (f = 0; f < nmeshes; f++)
-            if (zs_model_load(&s->model, meshes[f], shade == ZS_SHADE_GOURAUD) != 0)
+            if (zs_model_load_opts(&s->model, meshes[f], &mo) != 0)
                 return -1;
-        if (s->model.total_tris == 0 || s->model.total_tris > ZS_MAX_TRIANGLES / 3) {
-            fprintf(stderr, "%s: %lu triangles: need 1..%u\n", prog,
-                    (unsigned long)s->model.total_tris, ZS_MAX_TRIANGLES / 3);
+        /* Clipping may split triangles: the pool holds three per triangle. */
+        if (s->model.total_tris > limit) {
+            fprintf(stderr,
+                    "%s: %lu triangles: an animated view takes at most %lu%s; decimate with "
+                    "zspan-meshc --max-triangles %lu --format zsm -o out/model FILE and give "
+                    "--mesh out/model.zsm\n",
+                    prog, (unsigned long)s->model.total_tris, limit,
+                    two_sided ? " with --two-sided" : "", limit);
             return -1;
         }
-        if (zs_model_fit_and_colour(&s->model) != 0) {
+        if (zs_model_fit_and_colour(&s->model) != 0 ||
+            (two_sided && zs_model_add_back_faces(&s->model) != 0)) {
             fprintf(stderr, "%s: cannot prepare the meshes\n", prog);
             return -1;
         }

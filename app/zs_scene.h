@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The scene of the animated programs (zspan-sim panel, zspan-linux,
  * zspan-mcp2210): the built-in demo scene, or mesh files fitted to the unit
@@ -23,6 +24,10 @@ typedef struct zs_scene {
  * Returns 0, or -1 after a message. */
 int zs_scene_load(zs_scene *s, const char *const *meshes, int nmeshes, zs_shading shade,
                   const char *prog);
+/* The same with the meshes' winding (flip), back faces (two_sided) and up
+ * axis (ZS_UP_* of zs_model.h). */
+int zs_scene_load_meshes(zs_scene *s, const char *const *meshes, int nmeshes, zs_shading shade,
+                         int flip, int two_sided, int up_axis, const char *prog);
 
 /* Begins frame k: the demo's camera orbit from frame `start`, spin degrees
  * per frame in steps of 3 (at least one step when spin > 0), or the meshes

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Firmware benchmark image (Cortex-M4 on QEMU mps2-an386, Cortex-M0 on QEMU
  * microbit). Output through semihosting, one line per measurement:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The benchmark scenes; see bench_scenes.h. */
 #include "bench_scenes.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The standard benchmark scenes (freestanding C99: host and firmware).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Writes the "cluster" benchmark scene as a Wavefront OBJ on stdout: 40
  * long octahedra ("spikes": half-length 0.45..0.9 along a random axis,
  * half-width 0.08..0.2) with centres within 0.55 of the origin, so that

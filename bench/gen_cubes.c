@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Writes the "cubes" benchmark scene as a Wavefront OBJ on stdout: 64 unit
  * cubes (edge 1) on a 4x4x4 grid with centres 1.5 apart (extent +-2.75),
  * 8 vertices and 12 outward counter-clockwise triangles each (768 in all).

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Runs the zspan benchmark and writes the Markdown table (make bench).
 #
 # Environment (set by mk/firmware.mk): BENCH_HOST, FW_M4, FW_M0, FW_M0BIG,

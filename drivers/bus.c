@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* zspan bus: command/pixel split, async completion, counters, wire time. */
 #include "zspan/bus.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Generic MIPI-DCS panel driver (ST7789, ILI9341, ST7735, GC9A01, ILI9488):
  * the zs_panel_ops_dcs table. Everything module-specific comes from the
  * zs_panel_desc table. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* zspan panel driver: the parts shared by all command sets (geometry,
  * rotation, windows, pixel writes). What goes on the wire for each step
  * comes from the description's operations table (dcs.c, ssd1351.c). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Internal helpers shared by the common panel code and the command-set back
  * ends (dcs.c, ssd1351.c). Not installed; not public API. */
 #ifndef ZSPAN_DRIVERS_PANEL_INTERNAL_H

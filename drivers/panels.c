@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* zspan panel tables: one constant description per supported module.
  *
  * Init records: cmd, n (| ZS_INIT_DELAY), params..., [delay ms]. They hold the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* SSD1351 128x128 colour OLED driver (Solomon command set): the
  * zs_panel_ops_ssd1351 table.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* zspan frame streaming: render band k into one buffer while band k-1 is on
  * the bus, and account for the frame's wire traffic. */
 #include "panel_internal.h"

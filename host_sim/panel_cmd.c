@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan-sim panel: renders frames through a panel driver into an emulated
  * display controller, exactly as they would go down the SPI wire, and shows
@@ -47,6 +48,7 @@ SIM_COMMAND(panel, "panel", sim_panel_main, panel_usage)
 typedef struct panel_opts {
     zs_app_opts app;
     const char *out, *seq;
+    int out_set, done;
     long scale, max_transfer;
     double clock;
     int window, hold, async, trace;
@@ -85,7 +87,14 @@ static int parse(int argc, char **argv, panel_opts *o)
         return SIM_EXIT_FAIL;
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];
-        if ((m = zs_app_option(argc, argv, &i, &o->app, PANEL_PROG)) != 0) {
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            printf("usage: zspan-sim panel [options]\n%s", panel_usage);
+            o->done = 1;
+            return 0;
+        } else if (zs_opt_version(a, PANEL_PROG)) {
+            o->done = 1;
+            return 0;
+        } else if ((m = zs_app_option(argc, argv, &i, &o->app, PANEL_PROG)) != 0) {
             if (m < 0)
                 return SIM_EXIT_USAGE;
         } else if (strcmp(a, "--window") == 0) {
@@ -100,8 +109,9 @@ static int parse(int argc, char **argv, panel_opts *o)
             if (m < 0)
                 return SIM_EXIT_USAGE;
             o->out = v;
+            o->out_set = 1;
         } else if ((m = zs_opt_value(argc, argv, &i, "--seq", &v, PANEL_PROG)) != 0) {
-            if (m < 0)
+            if (m < 0 || zs_opt_seq_pattern(PANEL_PROG, "--seq", v) != 0)
                 return SIM_EXIT_USAGE;
             o->seq = v;
         } else if ((m = zs_opt_value(argc, argv, &i, "--scale", &v, PANEL_PROG)) != 0) {
@@ -118,11 +128,36 @@ static int parse(int argc, char **argv, panel_opts *o)
                 return SIM_EXIT_USAGE;
             }
         } else {
-            fprintf(stderr, PANEL_PROG ": unknown option '%s' (see zspan-sim --help)\n", a);
+            fprintf(stderr, PANEL_PROG ": unknown option '%s' (see zspan-sim panel --help)\n", a);
             return SIM_EXIT_USAGE;
         }
     }
+    if (o->app.list)
+        return 0;
+    if (zs_app_check(&o->app, PANEL_PROG) != 0)
+        return SIM_EXIT_USAGE;
+    if (o->out_set && o->out[0] != '\0' && sim_check_output(o->out, "--out") != 0)
+        return SIM_EXIT_USAGE;
+    if (o->seq != NULL) {
+        char path[4096];
+        /* Frame 0's name stands for all: the directory must exist. */
+        if (zs_opt_seq_path(path, sizeof path, o->seq, 0) != 0) {
+            fprintf(stderr, PANEL_PROG ": --seq: the file names of '%s' are too long\n", o->seq);
+            return SIM_EXIT_USAGE;
+        }
+        if (sim_check_output(path, "--seq") != 0)
+            return SIM_EXIT_USAGE;
+    }
     return 0;
+}
+
+int sim_panel_parse_check(int argc, char **argv)
+{
+    panel_opts o;
+    int rc = parse(argc, argv, &o);
+
+    zs_app_free(&o.app);
+    return rc;
 }
 
 static void print_trace(const emu_panel *e, const char *title)
@@ -144,11 +179,6 @@ static void print_trace(const emu_panel *e, const char *title)
     printf("\n");
 }
 
-static int seq_path(char *buf, size_t n, const char *pattern, long k)
-{
-    int len = snprintf(buf, n, pattern, (int)k);
-    return len > 0 && (size_t)len < n ? 0 : -1;
-}
 
 /* Loop hook: the init is on the panel and the renderer ready. */
 static int on_ready(void *ctx, const zs_panel *lcd, const zs_wire_model *wire)
@@ -205,11 +235,14 @@ static int on_frame(void *ctx, const zs_app_frame *f)
     pr->last_stats = *f->stats;
     pr->frames_done++;
     if (o->seq != NULL) {
-        char path[1024];
-        if (seq_path(path, sizeof path, o->seq, f->index) != 0 ||
-            sim_make_parent_dirs(path) != 0 ||
-            emu_write_png(&pr->emu, (unsigned)o->app.rotation, path) != 0) {
-            fprintf(stderr, PANEL_PROG ": cannot write frame %ld (%s)\n", f->index, o->seq);
+        char path[4096];
+        if (zs_opt_seq_path(path, sizeof path, o->seq, f->index) != 0) {
+            fprintf(stderr, PANEL_PROG ": --seq: the name of frame %ld is too long\n", f->index);
+            pr->failed = 1;
+            return 1;
+        }
+        if (emu_write_png(&pr->emu, (unsigned)o->app.rotation, path) != 0) {
+            fprintf(stderr, PANEL_PROG ": cannot write frame %ld (%s)\n", f->index, path);
             pr->failed = 1;
             return 1;
         }
@@ -271,7 +304,7 @@ static int finish(panel_run *pr)
     emu_port_drain(&pr->port);
     emu_flush(&pr->emu);
     if (o->out != NULL && o->out[0] != '\0' &&
-        (sim_make_parent_dirs(o->out) != 0 ||
+        ((!o->out_set && sim_make_parent_dirs(o->out) != 0) ||
          emu_write_png(&pr->emu, (unsigned)o->app.rotation, o->out) != 0)) {
         fprintf(stderr, PANEL_PROG ": cannot write %s\n", o->out);
         return SIM_EXIT_FAIL;
@@ -306,7 +339,7 @@ int sim_panel_main(int argc, char **argv)
     int rc;
 
     rc = parse(argc, argv, &o);
-    if (rc != 0 || o.app.list) {
+    if (rc != 0 || o.app.list || o.done) {
         if (o.app.list)
             zs_app_list_panels(stdout);
         zs_app_free(&o.app);

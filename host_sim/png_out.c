@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* zspan-sim: PNG writing with libpng (host only). */
 #include "png_out.h"
 

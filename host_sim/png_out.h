@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* zspan-sim: PNG writing with libpng (host only). */
 #ifndef ZSPAN_SIM_PNG_OUT_H
 #define ZSPAN_SIM_PNG_OUT_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* zspan-sim render: meshes from files (assimp) -> PNG through the core. */
 #include "sim.h"
 
@@ -11,37 +12,9 @@
 #include "zs_model.h"
 #include "zs_opts.h"
 
-enum { SHADE_FLAT, SHADE_GOURAUD, SHADE_IDS };
+static int vec_to_fixed(const char *what, const double v[3], zs_vec3 *out);
 
-typedef struct render_opts {
-    const char **files;
-    int nfiles;
-    int width, height;
-    double fov, near_z, far_z;
-    double eye[3], target[3], up[3];
-    double rot[3];
-    int has_rot;
-    int fit;
-    int smooth;
-    zs_visibility mode;
-    int shade;
-    const char *out;
-    const char *dump;
-    zs_color background;
-    int has_light;
-    double light[4];
-    int has_ambient;
-    double ambient;
-    int unlit;
-    int fog;
-    double fog_start, fog_end;
-    zs_color fog_color;
-    long band;
-    long max_tris, max_verts, max_edges;
-    int quiet;
-} render_opts;
-
-static void opts_default(render_opts *o)
+static void opts_default(sim_render_opts *o)
 {
     memset(o, 0, sizeof *o);
     o->width = 240;
@@ -53,12 +26,13 @@ static void opts_default(render_opts *o)
     o->up[1] = 1.0;
     o->mode = ZS_MODE_SPAN;
     o->shade = SHADE_FLAT;
-    o->out = "out/render.png";
+    o->out = SIM_RENDER_OUT;
+    o->up_axis = ZS_UP_AUTO;
     o->background = 0;
     o->band = 1;
 }
 
-static int parse_fog(const char *s, render_opts *o)
+static int parse_fog(const char *s, sim_render_opts *o)
 {
     char buf[128];
     char *c1, *c2;
@@ -94,12 +68,13 @@ static int count_commas(const char *s)
     return n;
 }
 
-/* Returns 0, or SIM_EXIT_USAGE after printing a message. */
-static int parse_args(int argc, char **argv, render_opts *o)
+/* Returns 0, or SIM_EXIT_USAGE after printing a message, or SIM_EXIT_OK with
+ * o->done set after --help or --version. */
+static int parse_args(int argc, char **argv, sim_render_opts *o)
 {
     int i, only_files = 0;
 
-    o->files = malloc((size_t)argc * sizeof *o->files);
+    o->files = malloc((size_t)(argc + 1) * sizeof *o->files);
     if (o->files == NULL) {
         fprintf(stderr, "zspan-sim: out of memory\n");
         return SIM_EXIT_FAIL;
@@ -115,6 +90,23 @@ static int parse_args(int argc, char **argv, render_opts *o)
         }
         if (strcmp(a, "--") == 0) {
             only_files = 1;
+            continue;
+        }
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            sim_print_render_usage(stdout);
+            o->done = 1;
+            return SIM_EXIT_OK;
+        }
+        if (zs_opt_version(a, SIM_PROG)) {
+            o->done = 1;
+            return SIM_EXIT_OK;
+        }
+        if (strcmp(a, "--flip-winding") == 0) {
+            o->flip_winding = 1;
+            continue;
+        }
+        if (strcmp(a, "--two-sided") == 0) {
+            o->two_sided = 1;
             continue;
         }
         if (strcmp(a, "--fit") == 0) {
@@ -152,9 +144,24 @@ static int parse_args(int argc, char **argv, render_opts *o)
         } else if (OPT("--target")) {
             if (m < 0 || zs_opt_doubles(SIM_PROG, "--target", v, o->target, 3) != 0)
                 return SIM_EXIT_USAGE;
-        } else if (OPT("--up")) {
-            if (m < 0 || zs_opt_doubles(SIM_PROG, "--up", v, o->up, 3) != 0)
+        } else if (OPT("--up-axis")) {
+            if (m < 0 || zs_opt_up_axis(SIM_PROG, "--up-axis", v, &o->up_axis) != 0)
                 return SIM_EXIT_USAGE;
+        } else if (OPT("--up")) {
+            /* An axis name is the file's up axis; three numbers the camera's up. */
+            if (m < 0)
+                return SIM_EXIT_USAGE;
+            if (strchr(v, ',') == NULL) {
+                if (zs_opt_up_axis(SIM_PROG, "--up (an axis, or x,y,z for the camera)", v,
+                                   &o->up_axis) != 0)
+                    return SIM_EXIT_USAGE;
+                if (o->up_axis == 0) {
+                    fprintf(stderr, "zspan-sim: --up auto: say --up-axis auto\n");
+                    return SIM_EXIT_USAGE;
+                }
+            } else if (zs_opt_doubles(SIM_PROG, "--up", v, o->up, 3) != 0) {
+                return SIM_EXIT_USAGE;
+            }
         } else if (OPT("--rotate")) {
             if (m < 0 || zs_opt_doubles(SIM_PROG, "--rotate", v, o->rot, 3) != 0)
                 return SIM_EXIT_USAGE;
@@ -170,6 +177,7 @@ static int parse_args(int argc, char **argv, render_opts *o)
             if (m < 0)
                 return SIM_EXIT_USAGE;
             o->out = v;
+            o->out_set = 1;
         } else if (OPT("--dump-tris")) {
             if (m < 0)
                 return SIM_EXIT_USAGE;
@@ -207,17 +215,135 @@ static int parse_args(int argc, char **argv, render_opts *o)
                 zs_opt_long(SIM_PROG, "--max-edges", v, 2, ZS_MAX_ACTIVE_EDGES, &o->max_edges) != 0)
                 return SIM_EXIT_USAGE;
         } else {
-            fprintf(stderr, "zspan-sim: render: unknown option '%s' (see zspan-sim --help)\n",
+            fprintf(stderr, "zspan-sim: render: unknown option '%s' (see zspan-sim render --help)\n",
                     a);
             return SIM_EXIT_USAGE;
         }
 #undef OPT
     }
     if (o->nfiles == 0) {
-        fprintf(stderr, "zspan-sim: render: no mesh file given (see zspan-sim --help)\n");
+        fprintf(stderr, "zspan-sim: render: no mesh file given (see zspan-sim render --help)\n");
         return SIM_EXIT_USAGE;
     }
     return 0;
+}
+
+/* The narrowest field of view (Q16.16 degrees) the core's projection takes. */
+static zs_fixed narrowest_fov(void)
+{
+    zs_fixed lo = 0, hi = ZS_FX(1); /* refused at lo, taken at hi */
+    zs_camera cam;
+
+    memset(&cam, 0, sizeof cam);
+    while (hi - lo > 1) {
+        zs_fixed mid = lo + (hi - lo) / 2;
+        if (zs_camera_perspective(&cam, mid, ZS_FX(1), ZS_FX(2)) == ZS_OK)
+            hi = mid;
+        else
+            lo = mid;
+    }
+    return hi;
+}
+
+/* The camera and projection options, checked against what the core takes,
+ * each message naming the option. Returns 0 or SIM_EXIT_USAGE. */
+static int check_camera(sim_render_opts *o)
+{
+    zs_camera cam;
+    zs_fixed fov_min;
+    zs_status st;
+
+    if (vec_to_fixed("--eye", o->eye, &o->q_eye) != 0 ||
+        vec_to_fixed("--target", o->target, &o->q_target) != 0 ||
+        vec_to_fixed("--up", o->up, &o->q_up) != 0)
+        return SIM_EXIT_USAGE;
+    if (!(o->fov > 0.0 && o->fov < 180.0)) {
+        fprintf(stderr, "zspan-sim: --fov: %g is outside 0 .. 180 degrees (both excluded)\n",
+                o->fov);
+        return SIM_EXIT_USAGE;
+    }
+    fov_min = narrowest_fov();
+    if (zs_opt_fixed(SIM_PROG, "--fov", o->fov, &o->q_fov) != 0 || o->q_fov < fov_min) {
+        fprintf(stderr, "zspan-sim: --fov: %g degrees is too narrow (the narrowest is %.5f)\n",
+                o->fov, (double)fov_min / 65536.0);
+        return SIM_EXIT_USAGE;
+    }
+    if (zs_opt_fixed(SIM_PROG, "--near", o->near_z, &o->q_near) != 0 ||
+        zs_opt_fixed(SIM_PROG, "--far", o->far_z, &o->q_far) != 0)
+        return SIM_EXIT_USAGE;
+    if (o->q_near <= 0) {
+        fprintf(stderr, "zspan-sim: --near: %g must be above 0 (at least 1/65536)\n", o->near_z);
+        return SIM_EXIT_USAGE;
+    }
+    if (o->q_far <= o->q_near) {
+        fprintf(stderr, "zspan-sim: --far: %g must be beyond --near %g\n", o->far_z, o->near_z);
+        return SIM_EXIT_USAGE;
+    }
+    st = zs_camera_perspective(&cam, o->q_fov, o->q_near, o->q_far);
+    if (st != ZS_OK) {
+        fprintf(stderr, "zspan-sim: --fov %g --near %g --far %g: %s\n", o->fov, o->near_z,
+                o->far_z, zs_strerror(st));
+        return SIM_EXIT_USAGE;
+    }
+    if (o->q_eye.x == o->q_target.x && o->q_eye.y == o->q_target.y &&
+        o->q_eye.z == o->q_target.z) {
+        fprintf(stderr, "zspan-sim: --eye and --target are the same point\n");
+        return SIM_EXIT_USAGE;
+    }
+    st = zs_camera_look_at(&cam, o->q_eye, o->q_target, o->q_up);
+    if (st != ZS_OK) {
+        fprintf(stderr, "zspan-sim: --up %g,%g,%g is zero or parallel to the view direction "
+                        "(--target minus --eye)\n",
+                o->up[0], o->up[1], o->up[2]);
+        return SIM_EXIT_USAGE;
+    }
+    return 0;
+}
+
+int sim_render_parse(int argc, char **argv, sim_render_opts *o)
+{
+    int rc;
+
+    opts_default(o);
+    rc = parse_args(argc, argv, o);
+    if (rc != 0 || o->done)
+        return rc;
+    rc = check_camera(o);
+    if (rc == 0 && o->has_rot) {
+        zs_fixed ax, ay, az;
+        if (zs_opt_fixed(SIM_PROG, "--rotate", o->rot[0], &ax) != 0 ||
+            zs_opt_fixed(SIM_PROG, "--rotate", o->rot[1], &ay) != 0 ||
+            zs_opt_fixed(SIM_PROG, "--rotate", o->rot[2], &az) != 0)
+            rc = SIM_EXIT_USAGE;
+    }
+    if (rc == 0 && o->has_ambient && zs_opt_fixed(SIM_PROG, "--ambient", o->ambient, &o->q_ambient) != 0)
+        rc = SIM_EXIT_USAGE;
+    if (rc == 0 && o->fog) {
+        zs_fixed a, b;
+        if (zs_opt_fixed(SIM_PROG, "--fog", o->fog_start, &a) != 0 ||
+            zs_opt_fixed(SIM_PROG, "--fog", o->fog_end, &b) != 0)
+            rc = SIM_EXIT_USAGE;
+    }
+    if (rc == 0 && o->has_light) {
+        zs_fixed in;
+        if (zs_opt_fixed(SIM_PROG, "--light", o->light[3], &in) != 0)
+            rc = SIM_EXIT_USAGE;
+        else if (o->light[0] == 0.0 && o->light[1] == 0.0 && o->light[2] == 0.0) {
+            fprintf(stderr, "zspan-sim: --light: the direction 0,0,0 points nowhere\n");
+            rc = SIM_EXIT_USAGE;
+        }
+    }
+    if (rc == 0 && sim_check_output(o->out, "--out") != 0)
+        rc = SIM_EXIT_USAGE;
+    if (rc == 0 && o->dump != NULL && sim_check_output(o->dump, "--dump-tris") != 0)
+        rc = SIM_EXIT_USAGE;
+    return rc;
+}
+
+void sim_render_opts_free(sim_render_opts *o)
+{
+    free(o->files);
+    o->files = NULL;
 }
 
 /* A pleasant, deterministic colour for triangle number n (0-based). */
@@ -265,7 +391,7 @@ static void normalize3(double v[3])
 }
 
 /* Default light: from over the viewer's left shoulder. */
-static void default_light(const render_opts *o, double out[3])
+static void default_light(const sim_render_opts *o, double out[3])
 {
     double f[3], u[3], r[3], d;
     int a;
@@ -307,7 +433,7 @@ static int core_error(const char *call, zs_status st)
 
 int sim_cmd_render(int argc, char **argv)
 {
-    render_opts o;
+    sim_render_opts o;
     zs_model scene;
     zs_renderer r;
     zs_camera cam;
@@ -325,31 +451,36 @@ int sim_cmd_render(int argc, char **argv)
     int rc = SIM_EXIT_FAIL, f;
 
     memset(&scene, 0, sizeof scene);
-    opts_default(&o);
-    f = parse_args(argc, argv, &o);
-    if (f != 0) {
-        free(o.files);
+    f = sim_render_parse(argc, argv, &o);
+    if (f != 0 || o.done) {
+        sim_render_opts_free(&o);
         return f;
     }
-
-    /* Camera and projection first: bad numbers are usage errors. */
-    if (vec_to_fixed("--eye", o.eye, &eye) != 0 || vec_to_fixed("--target", o.target, &target) != 0 ||
-        vec_to_fixed("--up", o.up, &up) != 0 || zs_opt_fixed(SIM_PROG, "--fov", o.fov, &fov) != 0 ||
-        zs_opt_fixed(SIM_PROG, "--near", o.near_z, &near_z) != 0 ||
-        zs_opt_fixed(SIM_PROG, "--far", o.far_z, &far_z) != 0) {
-        free(o.files);
-        return SIM_EXIT_USAGE;
-    }
+    eye = o.q_eye;
+    target = o.q_target;
+    up = o.q_up;
+    fov = o.q_fov;
+    near_z = o.q_near;
+    far_z = o.q_far;
 
     for (f = 0; f < o.nfiles; f++) {
-        if (zs_model_load(&scene, o.files[f],
-                           o.shade == SHADE_GOURAUD ? (o.smooth ? 2 : 1) : 0) != 0)
+        zs_model_opts lo = zs_model_opts_default();
+        lo.want_normals = o.shade == SHADE_GOURAUD ? (o.smooth ? 2 : 1) : 0;
+        lo.flip_winding = o.flip_winding;
+        lo.up = o.up_axis;
+        lo.quiet = o.quiet;
+        if (zs_model_load_opts(&scene, o.files[f], &lo) != 0)
             goto done;
-        if (scene.total_tris > ZS_MAX_TRIANGLES) {
+        if (scene.total_tris * (o.two_sided ? 2u : 1u) > ZS_MAX_TRIANGLES) {
             fprintf(stderr,
-                    "zspan-sim: too many triangles: %lu after %s (a frame takes at most %u, the "
-                    "tags of --shade ids are 16-bit)\n",
-                    (unsigned long)scene.total_tris, o.files[f], (unsigned)ZS_MAX_TRIANGLES);
+                    "zspan-sim: %s: too many triangles (%lu so far%s); a frame takes at most "
+                    "%u (and the tags of --shade ids are 16-bit). Decimate it with the "
+                    "converter, which writes a file zspan-sim reads:\n"
+                    "  zspan-meshc --max-triangles %u --format zsm -o out/model %s\n"
+                    "  zspan-sim render out/model.zsm ...\n",
+                    o.files[f], (unsigned long)scene.total_tris,
+                    o.two_sided ? ", twice with --two-sided" : "", (unsigned)ZS_MAX_TRIANGLES,
+                    o.two_sided ? 30000u : 60000u, o.files[f]);
             goto done;
         }
     }
@@ -384,6 +515,11 @@ int sim_cmd_render(int argc, char **argv)
         }
     }
 
+    if (o.two_sided && zs_model_add_back_faces(&scene) != 0) {
+        fprintf(stderr, "zspan-sim: out of memory\n");
+        goto done;
+    }
+
     if (o.has_rot) {
         zs_fixed ax, ay, az;
         zs_mat34 rx, ry, rz, m;
@@ -409,14 +545,12 @@ int sim_cmd_render(int argc, char **argv)
     arena = zs_app_renderer(&r, &cfg, &arena_size, SIM_PROG);
     if (arena == NULL)
         goto done;
+    /* Checked by sim_render_parse: these cannot fail here. */
     st = zs_camera_look_at(&cam, eye, target, up);
+    if (st == ZS_OK)
+        st = zs_camera_perspective(&cam, fov, near_z, far_z);
     if (st != ZS_OK) {
-        rc = core_error("zs_camera_look_at (--eye/--target/--up)", st);
-        goto done;
-    }
-    st = zs_camera_perspective(&cam, fov, near_z, far_z);
-    if (st != ZS_OK) {
-        rc = core_error("zs_camera_perspective (--fov/--near/--far)", st);
+        rc = core_error("the camera", st);
         goto done;
     }
     st = zs_frame_begin(&r, &cam, o.mode);
@@ -475,8 +609,6 @@ int sim_cmd_render(int argc, char **argv)
     }
 
     if (o.dump != NULL) {
-        if (sim_make_parent_dirs(o.dump) != 0)
-            goto done;
         dump = fopen(o.dump, "w");
         if (dump == NULL) {
             fprintf(stderr, "zspan-sim: cannot write %s: %s\n", o.dump, strerror(errno));
@@ -515,8 +647,8 @@ int sim_cmd_render(int argc, char **argv)
         dump = NULL;
     }
 
-    if (sim_make_parent_dirs(o.out) != 0)
-        goto done;
+    if (!o.out_set && sim_make_parent_dirs(o.out) != 0)
+        goto done; /* only the default's out/ is created */
     if (o.shade == SHADE_IDS) {
         if (png_write_gray16(o.out, o.width, o.height, img, stride) != 0)
             goto done;
@@ -548,6 +680,6 @@ done:
     free(img);
     free(arena);
     zs_model_free(&scene);
-    free(o.files);
+    sim_render_opts_free(&o);
     return rc;
 }

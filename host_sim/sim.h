@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan-sim: shared declarations of the host simulator (not part of the core).
  * Host code may use floating point, malloc and stdio; src/ may not.
@@ -20,6 +21,72 @@
 int sim_cmd_demo(int argc, char **argv);
 int sim_cmd_render(int argc, char **argv);
 void sim_print_usage(FILE *f);
+void sim_print_demo_usage(FILE *f);
+void sim_print_render_usage(FILE *f);
+
+/* ---- the subcommands' command lines ------------------------------------
+ * Each parser checks every option (ranges, files to write) before anything
+ * is loaded or opened and returns 0 (go on), SIM_EXIT_USAGE after a message,
+ * or SIM_EXIT_OK with done set after --help or --version. */
+
+enum { SHADE_FLAT, SHADE_GOURAUD, SHADE_IDS };
+
+#define SIM_DEMO_OUT "out/demo.png"
+#define SIM_RENDER_OUT "out/render.png"
+
+typedef struct sim_demo_opts {
+    const char *out;
+    int out_set;
+    zs_visibility mode;
+    zs_shading shading;
+    int width, height, compare, done;
+    long frame, band;
+} sim_demo_opts;
+
+int sim_demo_parse(int argc, char **argv, sim_demo_opts *o);
+
+typedef struct sim_render_opts {
+    const char **files;
+    int nfiles;
+    int width, height;
+    double fov, near_z, far_z;
+    double eye[3], target[3], up[3];
+    double rot[3];
+    int has_rot;
+    int fit;
+    int smooth;
+    int flip_winding;     /* the files' triangles are clockwise */
+    int two_sided;        /* draw back faces too */
+    int up_axis;          /* ZS_UP_* of app/zs_model.h: the files' up axis */
+    zs_visibility mode;
+    int shade;
+    const char *out;
+    int out_set;
+    const char *dump;
+    zs_color background;
+    int has_light;
+    double light[4];
+    int has_ambient;
+    double ambient;
+    int unlit;
+    int fog;
+    double fog_start, fog_end;
+    zs_color fog_color;
+    long band;
+    long max_tris, max_verts, max_edges;
+    int quiet;
+    int done;             /* --help or --version was answered */
+    /* Checked conversions of the camera options. */
+    zs_vec3 q_eye, q_target, q_up;
+    zs_fixed q_fov, q_near, q_far, q_ambient;
+} sim_render_opts;
+
+int sim_render_parse(int argc, char **argv, sim_render_opts *o);
+void sim_render_opts_free(sim_render_opts *o);
+
+/* zspan-sim panel's parser (host_sim/panel_cmd.c) run on its own, for the
+ * fuzz harness: the same results; the options are freed. */
+int sim_panel_parse_check(int argc, char **argv);
 
 /* ---- extension subcommands ---------------------------------------------
  * A source added to the simulator by an mk file (SIM_EXTRA_SRCS) adds a
@@ -52,8 +119,13 @@ void sim_register_command(const sim_command *cmd);
 /* ---- output ------------------------------------------------------------- */
 
 void sim_print_stats(FILE *f, const zs_stats *s);
-/* Creates the parent directories of path (like mkdir -p of its dirname). */
+/* Creates the parent directories of path (like mkdir -p of its dirname);
+ * only for the default output paths (out/...): a path the user gives is
+ * used as it is. */
 int sim_make_parent_dirs(const char *path);
+/* Checks an output path the user gave (opt names the option): not too
+ * long, its directory exists. 0, or -1 after a message. */
+int sim_check_output(const char *path, const char *opt);
 /* FNV-1a 32-bit checksum. */
 uint32_t sim_fnv1a(const void *data, size_t n);
 const char *sim_mode_name(zs_visibility mode);

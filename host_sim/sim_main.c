@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan-sim: the host simulator of zspan.
  *
@@ -26,34 +27,43 @@ void sim_register_command(const sim_command *cmd)
         extra_commands[n_extra_commands++] = cmd;
 }
 
-void sim_print_usage(FILE *f)
+void sim_print_demo_usage(FILE *f)
 {
-    int i;
+    fputs("usage: zspan-sim demo [options]\n"
+          "Renders the built-in scene (a torus sunk into a checkered ground, cubes\n"
+          "cutting into each other, a pyramid) and prints the frame statistics.\n"
+          "  --out FILE.png        output (default out/demo.png; out/ is created, any\n"
+          "                        other directory must exist)\n"
+          "  --mode span|zline     visibility mode (default span)\n"
+          "  --shade flat|gouraud  shading (default gouraud)\n"
+          "  --size WxH            image size (default 240x240)\n"
+          "  --frame N             camera orbit frame, 3 degrees each (default 0)\n"
+          "  --band N              rows per zs_render_frame band (default 1)\n"
+          "  --no-compare          do not also render the other mode and compare\n"
+          "  --help, --version\n",
+          f);
+}
 
+void sim_print_render_usage(FILE *f)
+{
     fputs(
-        "usage: zspan-sim demo [options]\n"
-        "       zspan-sim render FILE [FILE...] [options]\n"
-        "       zspan-sim COMMAND [options]   (extension commands, listed at the end)\n"
-        "       zspan-sim --help\n"
-        "\n"
-        "demo: renders the built-in scene (a torus sunk into a checkered ground, cubes\n"
-        "cutting into each other, a pyramid) and prints the frame statistics.\n"
-        "  --out FILE.png        output (default out/demo.png)\n"
-        "  --mode span|zline     visibility mode (default span)\n"
-        "  --shade flat|gouraud  shading (default gouraud)\n"
-        "  --size WxH            image size (default 240x240)\n"
-        "  --frame N             camera orbit frame, 3 degrees each (default 0)\n"
-        "  --band N              rows per zs_render_frame band (default 1)\n"
-        "  --no-compare          do not also render the other mode and compare\n"
-        "\n"
-        "render: loads meshes with assimp (triangulated; points and lines skipped) and\n"
-        "renders them. Triangle tags are 1-based in load order across all files.\n"
+        "usage: zspan-sim render FILE [FILE...] [options]\n"
+        "Loads meshes with assimp (triangulated; points and lines skipped), or the\n"
+        "binary meshes of zspan-meshc --format zsm, and renders them. Triangle tags\n"
+        "are 1-based in load order across all files.\n"
         "  --size WxH            image size (default 240x240)\n"
         "  --fov DEG             vertical field of view (default 60)\n"
         "  --near N --far F      clip distances (default 0.1 and 100)\n"
         "  --eye x,y,z           camera position (default 0,0,3)\n"
         "  --target x,y,z        point looked at (default 0,0,0)\n"
-        "  --up x,y,z            up direction (default 0,1,0)\n"
+        "  --up x,y,z            camera up direction (default 0,1,0)\n"
+        "  --up AXIS, --up-axis AXIS\n"
+        "                        the files' up axis (x, y, z, -x, -y, -z): the model is\n"
+        "                        turned so that it points up (+y); default auto: the\n"
+        "                        file's own up-axis metadata (FBX), else y\n"
+        "  --flip-winding        the files' triangles are clockwise: reverse them\n"
+        "  --two-sided           draw back faces too (a reversed copy of every\n"
+        "                        triangle; its tags follow all the originals')\n"
         "  --fit                 centre the bounding box of all meshes on the origin and\n"
         "                        scale so the farthest vertex is at distance 1; without it\n"
         "                        mesh coordinates are world coordinates\n"
@@ -64,10 +74,11 @@ void sim_print_usage(FILE *f)
         "                        flat/gouraud: 8-bit RGB PNG; ids: 16-bit grey PNG whose\n"
         "                        value is the tag of the visible triangle, 0 = background\n"
         "                        (default flat)\n"
-        "  --smooth              (gouraud) smooth vertex normals even when the file\n"
-        "                        has its own (default: the file's normals, smooth\n"
-        "                        ones generated only when it has none)\n"
-        "  --out FILE.png        output (default out/render.png)\n"
+        "  --smooth              (gouraud) recompute smooth vertex normals from the\n"
+        "                        winding even when the file has its own (default: the\n"
+        "                        file's normals, smooth ones only when it has none)\n"
+        "  --out FILE.png        output (default out/render.png; out/ is created, any\n"
+        "                        other directory must exist)\n"
         "  --dump-tris FILE      one line per stored triangle record: tag, then x y z of\n"
         "                        each vertex (x, y in pixels, z window depth in [0, 1])\n"
         "  --background RRGGBB   background colour (default 000000)\n"
@@ -79,12 +90,31 @@ void sim_print_usage(FILE *f)
         "  --band N              rows per zs_render_frame band (default 1)\n"
         "  --max-tris N --max-verts N --max-edges N\n"
         "                        pool capacities (default: from the triangle count)\n"
-        "  --quiet               print nothing on success\n"
+        "  --quiet               print nothing on success (and no warnings)\n"
+        "  --help, --version\n"
         "Colours: vertex colours, else the material's diffuse colour, else a palette\n"
         "colour per triangle (flat) or light grey (gouraud). Counter-clockwise faces\n"
-        "are front faces. Numbers are decimal, converted to Q16.16 (rounded).\n"
-        "Exit status: 0 ok, 1 failure (file, core, output), 2 bad command line.\n",
+        "are front faces. Numbers are decimal, converted to Q16.16 (rounded). An\n"
+        "import running longer than 30 s ($ZSPAN_IMPORT_SECONDS) is stopped.\n"
+        "A model of more than 65535 triangles: decimate it with zspan-meshc\n"
+        "--max-triangles N --format zsm and render the .zsm file.\n",
         f);
+}
+
+void sim_print_usage(FILE *f)
+{
+    int i;
+
+    fputs("usage: zspan-sim demo [options]\n"
+          "       zspan-sim render FILE [FILE...] [options]\n"
+          "       zspan-sim COMMAND [options]   (extension commands, listed at the end)\n"
+          "       zspan-sim COMMAND --help      (the options of one command)\n"
+          "       zspan-sim --help | --version\n"
+          "Exit status: 0 ok, 1 failure (file, core, output), 2 bad command line.\n\n",
+          f);
+    sim_print_demo_usage(f);
+    fputc('\n', f);
+    sim_print_render_usage(f);
     for (i = 0; i < n_extra_commands; i++) {
         fprintf(f, "\n%s:\n", extra_commands[i]->name);
         if (extra_commands[i]->usage != NULL)
@@ -116,14 +146,70 @@ static zs_status demo_render(zs_renderer *r, const demo_scene *s, uint32_t frame
     return st;
 }
 
+int sim_demo_parse(int argc, char **argv, sim_demo_opts *o)
+{
+    int i;
+
+    memset(o, 0, sizeof *o);
+    o->out = SIM_DEMO_OUT;
+    o->mode = ZS_MODE_SPAN;
+    o->shading = ZS_SHADE_GOURAUD;
+    o->width = 240;
+    o->height = 240;
+    o->compare = 1;
+    o->band = 1;
+    for (i = 1; i < argc; i++) {
+        const char *v = NULL;
+        int m;
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            sim_print_demo_usage(stdout);
+            o->done = 1;
+            return SIM_EXIT_OK;
+        } else if (zs_opt_version(argv[i], SIM_PROG)) {
+            o->done = 1;
+            return SIM_EXIT_OK;
+        } else if (strcmp(argv[i], "--no-compare") == 0) {
+            o->compare = 0;
+        } else if ((m = zs_opt_value(argc, argv, &i, "--out", &v, SIM_PROG)) != 0) {
+            if (m < 0)
+                return SIM_EXIT_USAGE;
+            o->out = v;
+            o->out_set = 1;
+        } else if ((m = zs_opt_value(argc, argv, &i, "--mode", &v, SIM_PROG)) != 0) {
+            if (m < 0 || zs_opt_mode(SIM_PROG, v, &o->mode) != 0)
+                return SIM_EXIT_USAGE;
+        } else if ((m = zs_opt_value(argc, argv, &i, "--shade", &v, SIM_PROG)) != 0) {
+            if (m < 0 || zs_opt_shade(SIM_PROG, v, &o->shading) != 0)
+                return SIM_EXIT_USAGE;
+        } else if ((m = zs_opt_value(argc, argv, &i, "--size", &v, SIM_PROG)) != 0) {
+            if (m < 0 || zs_opt_size(SIM_PROG, "--size", v, &o->width, &o->height) != 0)
+                return SIM_EXIT_USAGE;
+        } else if ((m = zs_opt_value(argc, argv, &i, "--frame", &v, SIM_PROG)) != 0) {
+            if (m < 0 || zs_opt_long(SIM_PROG, "--frame", v, 0, 1000000000L, &o->frame) != 0)
+                return SIM_EXIT_USAGE;
+        } else if ((m = zs_opt_value(argc, argv, &i, "--band", &v, SIM_PROG)) != 0) {
+            if (m < 0 || zs_opt_long(SIM_PROG, "--band", v, 1, ZS_MAX_DIM, &o->band) != 0)
+                return SIM_EXIT_USAGE;
+        } else {
+            fprintf(stderr, "zspan-sim: demo: unknown argument '%s' (see zspan-sim demo --help)\n",
+                    argv[i]);
+            return SIM_EXIT_USAGE;
+        }
+    }
+    if (o->out_set && sim_check_output(o->out, "--out") != 0)
+        return SIM_EXIT_USAGE;
+    return 0;
+}
+
 int sim_cmd_demo(int argc, char **argv)
 {
     static demo_scene scene;
-    const char *out = "out/demo.png";
-    zs_visibility mode = ZS_MODE_SPAN;
-    zs_shading shading = ZS_SHADE_GOURAUD;
-    int width = 240, height = 240, compare = 1, rc = SIM_EXIT_FAIL, i;
-    long frame = 0, band = 1;
+    sim_demo_opts o;
+    const char *out;
+    zs_visibility mode;
+    zs_shading shading;
+    int width, height, compare, rc = SIM_EXIT_FAIL;
+    long frame, band;
     zs_config cfg;
     zs_renderer r;
     zs_status st;
@@ -133,36 +219,18 @@ int sim_cmd_demo(int argc, char **argv)
     size_t arena_size, stride;
     double ms = 0.0, ms_other = 0.0;
 
-    for (i = 1; i < argc; i++) {
-        const char *v = NULL;
-        int m;
-        if (strcmp(argv[i], "--no-compare") == 0) {
-            compare = 0;
-        } else if ((m = zs_opt_value(argc, argv, &i, "--out", &v, SIM_PROG)) != 0) {
-            if (m < 0)
-                return SIM_EXIT_USAGE;
-            out = v;
-        } else if ((m = zs_opt_value(argc, argv, &i, "--mode", &v, SIM_PROG)) != 0) {
-            if (m < 0 || zs_opt_mode(SIM_PROG, v, &mode) != 0)
-                return SIM_EXIT_USAGE;
-        } else if ((m = zs_opt_value(argc, argv, &i, "--shade", &v, SIM_PROG)) != 0) {
-            if (m < 0 || zs_opt_shade(SIM_PROG, v, &shading) != 0)
-                return SIM_EXIT_USAGE;
-        } else if ((m = zs_opt_value(argc, argv, &i, "--size", &v, SIM_PROG)) != 0) {
-            if (m < 0 || zs_opt_size(SIM_PROG, "--size", v, &width, &height) != 0)
-                return SIM_EXIT_USAGE;
-        } else if ((m = zs_opt_value(argc, argv, &i, "--frame", &v, SIM_PROG)) != 0) {
-            if (m < 0 || zs_opt_long(SIM_PROG, "--frame", v, 0, 1000000000L, &frame) != 0)
-                return SIM_EXIT_USAGE;
-        } else if ((m = zs_opt_value(argc, argv, &i, "--band", &v, SIM_PROG)) != 0) {
-            if (m < 0 || zs_opt_long(SIM_PROG, "--band", v, 1, ZS_MAX_DIM, &band) != 0)
-                return SIM_EXIT_USAGE;
-        } else {
-            fprintf(stderr, "zspan-sim: demo: unknown argument '%s' (see zspan-sim --help)\n",
-                    argv[i]);
-            return SIM_EXIT_USAGE;
-        }
-    }
+    rc = sim_demo_parse(argc, argv, &o);
+    if (rc != 0 || o.done)
+        return rc;
+    rc = SIM_EXIT_FAIL;
+    out = o.out;
+    mode = o.mode;
+    shading = o.shading;
+    width = o.width;
+    height = o.height;
+    compare = o.compare;
+    frame = o.frame;
+    band = o.band;
 
     demo_scene_init(&scene);
     cfg = zs_app_config(width, height, 3ul * DEMO_TRIANGLES, 0, 0);
@@ -183,7 +251,8 @@ int sim_cmd_demo(int argc, char **argv)
         goto done;
     }
     stats = *zs_frame_stats(&r);
-    if (sim_make_parent_dirs(out) != 0 || png_write_rgb8(out, width, height, img, stride) != 0)
+    if ((!o.out_set && sim_make_parent_dirs(out) != 0) ||
+        png_write_rgb8(out, width, height, img, stride) != 0)
         goto done;
 
     printf("demo: %dx%d, %s, %s, frame %ld -> %s\n", width, height, sim_mode_name(mode),
@@ -235,6 +304,8 @@ int main(int argc, char **argv)
         sim_print_usage(stdout);
         return SIM_EXIT_OK;
     }
+    if (zs_opt_version(argv[1], SIM_PROG))
+        return SIM_EXIT_OK;
     if (strcmp(argv[1], "demo") == 0)
         return sim_cmd_demo(argc - 1, argv + 1);
     if (strcmp(argv[1], "render") == 0)

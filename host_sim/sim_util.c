@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* zspan-sim: statistics, files and image capture shared by the subcommands. */
 #include "sim.h"
 
@@ -25,13 +26,57 @@ void sim_print_stats(FILE *f, const zs_stats *s)
             (unsigned long)s->pixels_shaded);
 }
 
+/* Longest path accepted (the Linux PATH_MAX less its terminator). */
+#define SIM_PATH_MAX 4095u
+
+int sim_check_output(const char *path, const char *opt)
+{
+    char *dir;
+    const char *slash;
+    struct stat sb;
+    size_t n = strlen(path);
+
+    if (n == 0) {
+        fprintf(stderr, "zspan-sim: %s: the file name is empty\n", opt);
+        return -1;
+    }
+    if (n > SIM_PATH_MAX) {
+        fprintf(stderr, "zspan-sim: %s: the path is too long (%lu characters, at most %u)\n",
+                opt, (unsigned long)n, SIM_PATH_MAX);
+        return -1;
+    }
+    if (path[n - 1] == '/' || (stat(path, &sb) == 0 && S_ISDIR(sb.st_mode))) {
+        fprintf(stderr, "zspan-sim: %s: %s is a directory, not a file name\n", opt, path);
+        return -1;
+    }
+    slash = strrchr(path, '/');
+    if (slash == NULL || slash == path)
+        return 0; /* the current directory or / */
+    dir = malloc((size_t)(slash - path) + 1u);
+    if (dir == NULL)
+        return 0; /* the write will say what is wrong */
+    memcpy(dir, path, (size_t)(slash - path));
+    dir[slash - path] = '\0';
+    if (stat(dir, &sb) != 0 || !S_ISDIR(sb.st_mode)) {
+        fprintf(stderr, "zspan-sim: %s: cannot write %s: the directory %s does not exist "
+                        "(zspan-sim creates no directories but the default out/)\n",
+                opt, path, dir);
+        free(dir);
+        return -1;
+    }
+    free(dir);
+    return 0;
+}
+
 int sim_make_parent_dirs(const char *path)
 {
     char buf[4096];
     char *p;
 
-    if (strlen(path) >= sizeof buf)
+    if (strlen(path) >= sizeof buf) {
+        fprintf(stderr, "zspan-sim: %s: the path is too long\n", path);
         return -1;
+    }
     strcpy(buf, path);
     for (p = buf + 1; *p != '\0'; p++) {
         if (*p != '/')

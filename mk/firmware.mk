@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # mk/firmware.mk: the mesh converter, the Cortex-M port (QEMU mps2-an386 and
 # microbit, an STM32F411 example), the benchmark. Included by the top-level
 # Makefile (see docs/BUILD-CONTRACT.md and README.md (Meshes, firmware and the benchmark)).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # mk/fuzz.mk: libFuzzer harnesses (clang, AddressSanitizer, UBSan). Included by
 # the top-level Makefile (docs/BUILD-CONTRACT.md). The bad-input unit tests are
 # core suites (tests/core/test_api.c, test_extremes.c, test_pools.c).

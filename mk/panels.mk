@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # mk/panels.mk: panel drivers, bus, emulated panels, simulator panel command.
 # Included by the top-level Makefile (see docs/BUILD-CONTRACT.md).
 #

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # mk/ports.mk: the Linux (spidev + libgpiod) and MCP2210 (hidapi) ports and their tests.
 # Included by the top-level Makefile (see docs/BUILD-CONTRACT.md and README.md (Linux and USB ports)).
 #

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The core's size-optimised code paths (-Os) must render what the fast ones do.
 VARIANT_SRC := tests/variants/gouraud_hash.c
 

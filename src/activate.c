@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Triangle activation: when a stored triangle reaches its first row, make its
  * two edges from the edge pool and its depth and colour planes.
  *

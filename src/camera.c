@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Camera: look-at view transform and perspective parameters. */
 #include "zs_internal.h"
 

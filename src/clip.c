@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Homogeneous clipping: outcodes, and Sutherland-Hodgman against the near and
  * far planes and the guard band (x, y within +-guard * w). */
 #include "zs_internal.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Status codes and their descriptions: each says what the comment of its code
  * in include/zspan/zspan.h says (tests/core/test_status.c checks it). */
 #include "zs_internal.h"

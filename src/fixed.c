@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Fixed-point arithmetic: Q16.16 scalars, trigonometry, square roots, 3x4
  * matrices. Every product is formed in 64 bits and saturated back, so no
  * input can overflow (signed overflow is undefined behaviour in C). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Pixel formats: bytes per pixel, and packing an RGB888 colour into the
  * bytes the line buffer holds (the panel's byte order). */
 #include "zs_internal.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Geometry stage of zs_draw: transform vertices to clip space, light them,
  * trivially accept or reject triangles by outcodes, clip the rest, and hand
  * every screen triangle to setup. */

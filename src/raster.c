@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The row loop: activate the row's triangles, sort their new edges as a
  * batch, fold edges that two triangles share into one record, merge the batch
  * into the x-sorted active edge list, resolve the row, then step the edges,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The renderer context: configuration, arena layout, frame life cycle and
  * the band API. */
 #include "zs_internal.h"

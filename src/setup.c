@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Projection, snapping and triangle setup: screen vertices in 28.4, window
  * depth in Q2.30, back-face culling by the sign of the snapped area, and
  * compact triangle records bucketed by their first row.

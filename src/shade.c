@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shading: vertex colours (lighting, fog), colour planes and the Gouraud
  * span fill (pixel packing is in format.c). */
 #include "zs_internal.h"

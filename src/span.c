@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Span visibility for one row: walk the x-sorted active edge list, keep the
  * set of triangles the walk is inside and the nearest of them (the top).
  *

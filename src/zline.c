@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Scanline z-buffer for one row: one line of depth and owner, each
  * triangle's span walked with z += dz/dx per pixel, then the row written from
  * the owners. Exact for any input at the cost of a depth test per covered

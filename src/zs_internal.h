@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Internal records and helpers shared by the pipeline stages. */
 #ifndef ZSPAN_INTERNAL_H
 #define ZSPAN_INTERNAL_H

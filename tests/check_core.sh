@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # check-core: the core's Cortex-M0 objects (build/m0/*.o, compiled from src/*.c
 # by the Makefile) must not need floating point, an allocator or stdio.
 #

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # check-core-flags: every build rule of src/ passes the flags the core needs.
 #
 #   bash tests/check_core_flags.sh        (make check-core-flags; part of make test)

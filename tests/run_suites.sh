@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Runs test suites in order and sums their results.
 #
 #   tests/run_suites.sh ITEM...

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan-meshc: converts any model assimp can read into a C source and header
  * holding a zs_mesh in the core's format (int16 positions + Q16.16 scale,
@@ -31,8 +32,9 @@
 
 #include "zs_import.h"
 #include "zs_opts.h"
+#include "zspan/zspan.h"
 
-#define MESHC_VERSION "1.0"
+#define MESHC_VERSION ZSPAN_VERSION_STRING
 #define MAX_OUT 65535u              /* uint16 indices and counts */
 #define MAX_IN_VERTICES (1u << 26)  /* refuse absurd input before touching it */
 #define MAX_IN_FACES (1u << 26)
@@ -60,6 +62,8 @@ typedef struct options {
     int lenient;
     int info_only;
     int quiet;
+    int zsm;                 /* --format zsm: BASE.zsm instead of BASE.c + BASE.h */
+    int up_axis;             /* the file's up axis (zs_opt_up_axis), 0 = its metadata */
     long mem_limit_mb;       /* address-space limit while importing; 0 = none, -1 = auto */
 } options;
 
@@ -115,22 +119,6 @@ static void *xrealloc(void *p, size_t n)
     if (!q)
         die(EXIT_LIMIT, "out of memory (%zu bytes)", n);
     return q;
-}
-
-/* Some malformed files make the importer loop forever (a 330-byte PLY does
- * in assimp 5.2): give up after IMPORT_SECONDS (or $ZSPAN_MESHC_IMPORT_SECONDS)
- * with a clear message. */
-#define IMPORT_SECONDS 30u
-static void on_import_timeout(int sig)
-{
-    static const char msg1[] = ": error: ";
-    static const char msg2[] = ": the model importer did not finish in time (a malformed file?)\n";
-    (void)sig;
-    (void)!write(2, g_prog, strlen(g_prog));
-    (void)!write(2, msg1, sizeof msg1 - 1);
-    (void)!write(2, g_input, strlen(g_input));
-    (void)!write(2, msg2, sizeof msg2 - 1);
-    _exit(EXIT_INPUT);
 }
 
 /* assimp aborts on a few internal assertions; turn that into a clear message. */
@@ -244,14 +232,18 @@ static int collect_mesh(void *user, const zs_import_part *part)
     size_t base = m->nv;
     unsigned vi, f;
     uint32_t mcol = 0xFFFFFFu;
+    int up = o->up_axis ? o->up_axis : zs_import_file_up(part->scene);
 
     (void)zs_import_material_color(part->scene, me->mMaterialIndex, &mcol);
     for (vi = 0; vi < me->mNumVertices; vi++) {
         vert v;
         memset(&v, 0, sizeof v);
         zs_import_position(part, vi, v.p);
-        if (o->normals == NRM_FILE && me->mNormals)
+        zs_import_up_to_y(up, v.p);
+        if (o->normals == NRM_FILE && me->mNormals) {
             zs_import_normal(part, vi, v.n);
+            zs_import_up_to_y(up, v.n);
+        }
         if (o->colors == COL_VERTEX) {
             if (me->mColors[0]) {
                 v.c[0] = me->mColors[0][vi].r;
@@ -298,6 +290,8 @@ static void import_model(const options *o, model *m)
     struct stat st;
     rlim_t limit = 0;
 
+    if (stat(o->input, &st) == 0 && S_ISDIR(st.st_mode))
+        die(EXIT_INPUT, "is a directory, not a mesh file");
     probe = fopen(o->input, "rb");
     if (!probe)
         die(EXIT_INPUT, "cannot open: %s", strerror(errno));
@@ -324,14 +318,11 @@ static void import_model(const options *o, model *m)
     ls.callback = log_cb;
     ls.user = NULL;
     aiAttachLogStream(&ls);
-    signal(SIGALRM, on_import_timeout);
-    {
-        const char *env = getenv("ZSPAN_MESHC_IMPORT_SECONDS");
-        unsigned secs = env ? (unsigned)strtoul(env, NULL, 10) : IMPORT_SECONDS;
-        alarm(secs ? secs : IMPORT_SECONDS);
-    }
+    /* Some malformed files make the importer loop forever (a 330-byte PLY
+     * does in assimp 5.2): the shared guard stops it with a message. */
+    zs_import_guard_begin("zspan-meshc: error", g_input, EXIT_INPUT);
     s = aiImportFile(o->input, aiProcess_ValidateDataStructure);
-    alarm(0);
+    zs_import_guard_end();
     if (!s) {
         const char *err = aiGetErrorString();
         if (strstr(err, "bad_alloc") || strstr(err, "memory"))
@@ -346,9 +337,9 @@ static void import_model(const options *o, model *m)
             g_log_errors);
     }
     if (s->mFlags & AI_SCENE_FLAGS_INCOMPLETE)
-        die(EXIT_INPUT, "the model is incomplete (no geometry was read)");
+        die(EXIT_INPUT, "has no triangles (the importer read no geometry)");
     if (!s->mNumMeshes || !s->mMeshes)
-        die(EXIT_INPUT, "the model holds no meshes");
+        die(EXIT_INPUT, "has no triangles (no meshes)");
     for (i = 0; i < s->mNumMeshes; i++) {
         if (!s->mMeshes[i])
             die(EXIT_INPUT, "mesh %u is missing", i);
@@ -380,9 +371,8 @@ static void import_model(const options *o, model *m)
     }
     if (m->nt == 0) {
         if (m->skipped_prims)
-            die(EXIT_INPUT, "the model has no triangles (only %zu points/lines)",
-                m->skipped_prims);
-        die(EXIT_INPUT, "the model has no triangles");
+            die(EXIT_INPUT, "has no triangles (only %zu points/lines)", m->skipped_prims);
+        die(EXIT_INPUT, "has no triangles");
     }
     if (m->skipped_prims)
         warn(o, "skipped %zu point/line primitives", m->skipped_prims);
@@ -707,6 +697,80 @@ static int valid_ident(const char *s)
     return 1;
 }
 
+static int in_list(const char *s, const char *const *list)
+{
+    for (; *list != NULL; list++)
+        if (strcmp(s, *list) == 0)
+            return 1;
+    return 0;
+}
+
+/* Why an identifier cannot name the mesh (an external const zs_mesh, with
+ * NAME_positions etc. beside it), or NULL if it can. */
+static const char *ident_problem(const char *s)
+{
+    static const char *const c_keywords[] = {
+        "auto", "break", "case", "char", "const", "continue", "default", "do", "double",
+        "else", "enum", "extern", "float", "for", "goto", "if", "inline", "int", "long",
+        "register", "restrict", "return", "short", "signed", "sizeof", "static", "struct",
+        "switch", "typedef", "union", "unsigned", "void", "volatile", "while",
+        /* C23 */
+        "alignas", "alignof", "bool", "constexpr", "false", "nullptr", "static_assert",
+        "thread_local", "true", "typeof", "typeof_unqual", NULL};
+    static const char *const cxx_keywords[] = {
+        "and", "and_eq", "asm", "bitand", "bitor", "catch", "char8_t", "char16_t", "char32_t",
+        "class", "compl", "concept", "consteval", "constinit", "const_cast", "co_await",
+        "co_return", "co_yield", "decltype", "delete", "dynamic_cast", "explicit", "export",
+        "friend", "mutable", "namespace", "new", "noexcept", "not", "not_eq", "operator",
+        "or", "or_eq", "private", "protected", "public", "reinterpret_cast", "requires",
+        "static_cast", "template", "this", "throw", "try", "typeid", "typename", "using",
+        "virtual", "wchar_t", "xor", "xor_eq", NULL};
+    /* Names the included headers (zspan.h: <stddef.h>, <stdint.h>) or the C
+     * library already define with external linkage or as macros. */
+    static const char *const library[] = {
+        "NULL", "offsetof", "size_t", "ptrdiff_t", "max_align_t", "main", "errno", "assert",
+        "abort", "abs", "atexit", "atof", "atoi", "atol", "bsearch", "calloc", "div", "exit",
+        "free", "getenv", "labs", "ldiv", "malloc", "qsort", "rand", "realloc", "srand",
+        "system", "printf", "fprintf", "sprintf", "snprintf", "scanf", "sscanf", "puts",
+        "putchar", "getchar", "fopen", "fclose", "fread", "fwrite", "fflush", "remove",
+        "rename", "signal", "raise", "time", "clock", "sin", "cos", "tan", "sqrt", "pow",
+        "exp", "log", "floor", "ceil", "fabs", "round", "stdin", "stdout", "stderr", NULL};
+    size_t n = strlen(s);
+
+    if (!valid_ident(s))
+        return "is not a C identifier (letters, digits and _, not starting with a digit)";
+    if (in_list(s, c_keywords))
+        return "is a C keyword";
+    if (in_list(s, cxx_keywords))
+        return "is a C++ keyword (the generated header is usable from C++)";
+    if (s[0] == '_')
+        return "begins with an underscore (reserved for the implementation at file scope)";
+    if (in_list(s, library))
+        return "is already defined by the C library or the headers zspan.h includes";
+    if (n >= 2 && s[n - 2] == '_' && s[n - 1] == 't')
+        return "ends in _t (reserved for type names by POSIX and <stdint.h>)";
+    if (strncmp(s, "zs_", 3) == 0 || strncmp(s, "ZS_", 3) == 0 || strncmp(s, "zspan_", 6) == 0 ||
+        strncmp(s, "ZSPAN_", 6) == 0)
+        return "is in zspan's own namespace (zs_, ZS_, zspan_, ZSPAN_)";
+    /* C's future library directions (C99 7.26): reserved external names. */
+    if (((strncmp(s, "is", 2) == 0 || strncmp(s, "to", 2) == 0) && islower((unsigned char)s[2])) ||
+        ((strncmp(s, "str", 3) == 0 || strncmp(s, "mem", 3) == 0 || strncmp(s, "wcs", 3) == 0) &&
+         islower((unsigned char)s[3])) ||
+        (s[0] == 'E' && (isdigit((unsigned char)s[1]) || isupper((unsigned char)s[1]))) ||
+        (strncmp(s, "SIG", 3) == 0 && (isupper((unsigned char)s[3]) || s[3] == '_')) ||
+        (strncmp(s, "LC_", 3) == 0 && isupper((unsigned char)s[3])) ||
+        ((strncmp(s, "PRI", 3) == 0 || strncmp(s, "SCN", 3) == 0) &&
+         (islower((unsigned char)s[3]) || s[3] == 'X')) ||
+        ((strncmp(s, "int", 3) == 0 || strncmp(s, "uint", 4) == 0) && n >= 2 &&
+         strcmp(s + n - 2, "_t") == 0) ||
+        ((strncmp(s, "INT", 3) == 0 || strncmp(s, "UINT", 4) == 0) && n >= 4 &&
+         (strcmp(s + n - 4, "_MAX") == 0 || strcmp(s + n - 4, "_MIN") == 0 ||
+          strcmp(s + n - 2, "_C") == 0)))
+        return "is reserved for the C library's future use (is*, to*, str*, mem*, wcs*, E*, "
+               "SIG*, LC_*, PRI*, SCN*, INT*_MAX ...)";
+    return NULL;
+}
+
 static char *name_from_path(const char *path)
 {
     const char *b = strrchr(path, '/');
@@ -716,14 +780,18 @@ static char *name_from_path(const char *path)
     b = b ? b + 1 : path;
     dot = strrchr(b, '.');
     n = dot && dot != b ? (size_t)(dot - b) : strlen(b);
-    out = xrealloc(NULL, n + 3);
-    if (n == 0 || isdigit((unsigned char)b[0]))
-        out[k++] = 'm';
+    out = xrealloc(NULL, n + 8);
+    /* A name the file suggests but C would not take (a keyword, reserved, a
+     * leading digit or underscore) gets the prefix mesh_. */
+    memcpy(out, "mesh_", 5);
+    k = 5;
     for (i = 0; i < n; i++) {
         unsigned char ch = (unsigned char)b[i];
         out[k++] = (char)(isalnum(ch) ? tolower(ch) : '_');
     }
     out[k] = 0;
+    if (n > 0 && ident_problem(out + 5) == NULL)
+        memmove(out, out + 5, k - 5 + 1);
     return out;
 }
 
@@ -759,6 +827,154 @@ static void emit_end(emitter *e)
     fputs(e->col ? "\n};\n\n" : "};\n\n", e->f);
 }
 
+/* The mesh as the core takes it: what both output forms hold. */
+typedef struct out_mesh {
+    int16_t *pos;        /* 3 per vertex */
+    uint16_t *idx;       /* 3 per triangle */
+    uint32_t *fcol;      /* per face, or NULL */
+    uint32_t *vcol;      /* per vertex, or NULL */
+    int16_t *fnrm;       /* 3 per face, or NULL */
+    int16_t *vnrm;       /* 3 per vertex, or NULL */
+    uint32_t color;
+} out_mesh;
+
+static void build_output(const options *o, const model *m, long qscale, out_mesh *om)
+{
+    size_t i;
+    int r;
+
+    memset(om, 0, sizeof *om);
+    om->pos = xrealloc(NULL, m->nv * 3 * sizeof *om->pos);
+    for (i = 0; i < m->nv; i++)
+        for (r = 0; r < 3; r++) {
+            long qi = lround(m->v[i].p[r] * 65536.0 / (double)qscale);
+            om->pos[i * 3 + (size_t)r] = (int16_t)(qi > 32767 ? 32767 : qi < -32767 ? -32767 : qi);
+        }
+    om->idx = xrealloc(NULL, m->nt * 3 * sizeof *om->idx);
+    for (i = 0; i < m->nt; i++)
+        for (r = 0; r < 3; r++)
+            om->idx[i * 3 + (size_t)r] = (uint16_t)m->t[i].v[o->flip && r ? 3 - r : r];
+    if (o->colors == COL_MATERIAL || o->colors == COL_INDEX) {
+        int uniform = 1;
+        for (i = 1; i < m->nt; i++)
+            if (m->t[i].color != m->t[0].color)
+                uniform = 0;
+        if (o->colors == COL_INDEX || !uniform) {
+            om->fcol = xrealloc(NULL, m->nt * sizeof *om->fcol);
+            for (i = 0; i < m->nt; i++)
+                om->fcol[i] = o->colors == COL_INDEX ? index_color((uint32_t)i) : m->t[i].color;
+        }
+    }
+    if (o->colors == COL_VERTEX) {
+        om->vcol = xrealloc(NULL, m->nv * sizeof *om->vcol);
+        for (i = 0; i < m->nv; i++)
+            om->vcol[i] = zs_import_color(m->v[i].c[0], m->v[i].c[1], m->v[i].c[2]);
+    }
+    if (o->normals == NRM_FACE) {
+        om->fnrm = xrealloc(NULL, m->nt * 3 * sizeof *om->fnrm);
+        for (i = 0; i < m->nt; i++) {
+            double n[3];
+            face_normal(m, &m->t[i], n);
+            if (o->flip)
+                for (r = 0; r < 3; r++)
+                    n[r] = -n[r];
+            normalize3(n);
+            for (r = 0; r < 3; r++)
+                om->fnrm[i * 3 + (size_t)r] = q14(n[r]);
+        }
+    }
+    if (o->normals == NRM_SMOOTH || o->normals == NRM_FILE) {
+        double *vn = xrealloc(NULL, m->nv * 3 * sizeof *vn);
+        if (o->normals == NRM_FILE) {
+            for (i = 0; i < m->nv; i++)
+                for (r = 0; r < 3; r++)
+                    vn[i * 3 + (size_t)r] = o->flip ? -m->v[i].n[r] : m->v[i].n[r];
+        } else {
+            memset(vn, 0, m->nv * 3 * sizeof *vn);
+            for (i = 0; i < m->nt; i++) {
+                double n[3]; /* area weighted */
+                int c;
+                face_normal(m, &m->t[i], n);
+                for (c = 0; c < 3; c++)
+                    for (r = 0; r < 3; r++)
+                        vn[m->t[i].v[c] * 3 + (size_t)r] += o->flip ? -n[r] : n[r];
+            }
+            for (i = 0; i < m->nv; i++)
+                normalize3(&vn[i * 3]);
+        }
+        om->vnrm = xrealloc(NULL, m->nv * 3 * sizeof *om->vnrm);
+        for (i = 0; i < m->nv * 3; i++)
+            om->vnrm[i] = q14(vn[i]);
+        free(vn);
+    }
+    om->color = o->base_color;
+    if (o->colors == COL_MATERIAL && !om->fcol && m->nt)
+        om->color = m->t[0].color;
+}
+
+static void free_output(out_mesh *om)
+{
+    free(om->pos);
+    free(om->idx);
+    free(om->fcol);
+    free(om->vcol);
+    free(om->fnrm);
+    free(om->vnrm);
+}
+
+static void put_le(FILE *f, uint32_t v, int bytes)
+{
+    int k;
+    for (k = 0; k < bytes; k++)
+        fputc((int)((v >> (8 * k)) & 255u), f);
+}
+
+/* BASE.zsm: the binary mesh zspan-sim reads (layout: app/zs_model.h). */
+static void write_zsm(const options *o, const model *m, long qscale, const out_mesh *om)
+{
+    size_t len = strlen(o->output), i;
+    char *path = xrealloc(NULL, len + 5);
+    uint32_t flags = (om->fcol ? 1u : 0u) | (om->vcol ? 2u : 0u) | (om->fnrm ? 4u : 0u) |
+                     (om->vnrm ? 8u : 0u);
+    FILE *f;
+
+    sprintf(path, "%s.zsm", o->output);
+    f = fopen(path, "wb");
+    if (!f)
+        die(EXIT_IO, "cannot write %s: %s", path, strerror(errno));
+    fwrite("ZSMESH1\n", 1, 8, f);
+    put_le(f, flags, 4);
+    put_le(f, (uint32_t)qscale, 4);
+    put_le(f, om->color & 0xFFFFFFu, 4);
+    put_le(f, (uint32_t)m->nv, 2);
+    put_le(f, (uint32_t)m->nt, 2);
+    for (i = 0; i < m->nv * 3; i++)
+        put_le(f, (uint32_t)(uint16_t)om->pos[i], 2);
+    for (i = 0; i < m->nt * 3; i++)
+        put_le(f, om->idx[i], 2);
+    for (i = 0; om->fcol && i < m->nt; i++)
+        put_le(f, om->fcol[i], 4);
+    for (i = 0; om->vcol && i < m->nv; i++)
+        put_le(f, om->vcol[i], 4);
+    for (i = 0; om->fnrm && i < m->nt * 3; i++)
+        put_le(f, (uint32_t)(uint16_t)om->fnrm[i], 2);
+    for (i = 0; om->vnrm && i < m->nv * 3; i++)
+        put_le(f, (uint32_t)(uint16_t)om->vnrm[i], 2);
+    if (ferror(f) | (fclose(f) != 0))
+        die(EXIT_IO, "cannot write %s", path);
+    free(path);
+}
+
+static void emit_i16(emitter *e, const int16_t *v, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        char s[16];
+        sprintf(s, "%d", v[i]);
+        emit_val(e, s);
+    }
+}
+
 static void write_files(const options *o, const model *m, const char *name, long qscale,
                         const double lo[3], const double hi[3], double radius,
                         const double xform_scale, const double xform_shift[3])
@@ -767,10 +983,15 @@ static void write_files(const options *o, const model *m, const char *name, long
     const char *hname;
     FILE *fc, *fh;
     size_t len = strlen(o->output), i;
-    int r, has_fc = 0, has_vc = 0, has_fn = 0, has_vn = 0;
     emitter e;
-    double *vn = NULL;
+    out_mesh om;
 
+    build_output(o, m, qscale, &om);
+    if (o->zsm) {
+        write_zsm(o, m, qscale, &om);
+        free_output(&om);
+        return;
+    }
     cpath = xrealloc(NULL, len + 3);
     hpath = xrealloc(NULL, len + 3);
     sprintf(cpath, "%s.c", o->output);
@@ -815,136 +1036,72 @@ static void write_files(const options *o, const model *m, const char *name, long
 
     sprintf(buf, "static const int16_t %s_positions[%zu]", name, m->nv * 3);
     emit_begin(&e, fc, buf);
-    for (i = 0; i < m->nv; i++)
-        for (r = 0; r < 3; r++) {
-            double q = m->v[i].p[r] * 65536.0 / (double)qscale;
-            long qi = lround(q);
-            char s[16];
-            if (qi > 32767)
-                qi = 32767;
-            if (qi < -32767)
-                qi = -32767;
-            sprintf(s, "%ld", qi);
-            emit_val(&e, s);
-        }
+    emit_i16(&e, om.pos, m->nv * 3);
     emit_end(&e);
 
     sprintf(buf, "static const uint16_t %s_indices[%zu]", name, m->nt * 3);
     emit_begin(&e, fc, buf);
-    for (i = 0; i < m->nt; i++)
-        for (r = 0; r < 3; r++) {
-            char s[16];
-            sprintf(s, "%u", (unsigned)m->t[i].v[o->flip && r ? 3 - r : r]);
-            emit_val(&e, s);
-        }
+    for (i = 0; i < m->nt * 3; i++) {
+        char s[16];
+        sprintf(s, "%u", (unsigned)om.idx[i]);
+        emit_val(&e, s);
+    }
     emit_end(&e);
 
-    if (o->colors == COL_MATERIAL || o->colors == COL_INDEX) {
-        int uniform = 1;
-        for (i = 1; i < m->nt; i++)
-            if (m->t[i].color != m->t[0].color)
-                uniform = 0;
-        if (o->colors == COL_INDEX || !uniform) {
-            has_fc = 1;
-            sprintf(buf, "static const zs_color %s_face_colors[%zu]", name, m->nt);
-            emit_begin(&e, fc, buf);
-            for (i = 0; i < m->nt; i++) {
-                char s[16];
-                uint32_t c = o->colors == COL_INDEX ? index_color((uint32_t)i) : m->t[i].color;
-                sprintf(s, "0x%06lX", (unsigned long)c);
-                emit_val(&e, s);
-            }
-            emit_end(&e);
+    if (om.fcol) {
+        sprintf(buf, "static const zs_color %s_face_colors[%zu]", name, m->nt);
+        emit_begin(&e, fc, buf);
+        for (i = 0; i < m->nt; i++) {
+            char s[16];
+            sprintf(s, "0x%06lX", (unsigned long)om.fcol[i]);
+            emit_val(&e, s);
         }
+        emit_end(&e);
     }
-    if (o->colors == COL_VERTEX) {
-        has_vc = 1;
+    if (om.vcol) {
         sprintf(buf, "static const zs_color %s_vertex_colors[%zu]", name, m->nv);
         emit_begin(&e, fc, buf);
         for (i = 0; i < m->nv; i++) {
             char s[16];
-            sprintf(s, "0x%06lX",
-                    (unsigned long)zs_import_color(m->v[i].c[0], m->v[i].c[1], m->v[i].c[2]));
+            sprintf(s, "0x%06lX", (unsigned long)om.vcol[i]);
             emit_val(&e, s);
         }
         emit_end(&e);
     }
-    if (o->normals == NRM_FACE) {
-        has_fn = 1;
+    if (om.fnrm) {
         sprintf(buf, "static const int16_t %s_face_normals[%zu]", name, m->nt * 3);
         emit_begin(&e, fc, buf);
-        for (i = 0; i < m->nt; i++) {
-            double n[3];
-            face_normal(m, &m->t[i], n);
-            if (o->flip)
-                for (r = 0; r < 3; r++)
-                    n[r] = -n[r];
-            normalize3(n);
-            for (r = 0; r < 3; r++) {
-                char s[16];
-                sprintf(s, "%d", q14(n[r]));
-                emit_val(&e, s);
-            }
-        }
+        emit_i16(&e, om.fnrm, m->nt * 3);
         emit_end(&e);
     }
-    if (o->normals == NRM_SMOOTH || o->normals == NRM_FILE) {
-        has_vn = 1;
-        vn = xrealloc(NULL, m->nv * 3 * sizeof *vn);
-        if (o->normals == NRM_FILE) {
-            for (i = 0; i < m->nv; i++)
-                for (r = 0; r < 3; r++)
-                    vn[i * 3 + (size_t)r] = o->flip ? -m->v[i].n[r] : m->v[i].n[r];
-        } else {
-            memset(vn, 0, m->nv * 3 * sizeof *vn);
-            for (i = 0; i < m->nt; i++) {
-                double n[3]; /* area weighted */
-                int c;
-                face_normal(m, &m->t[i], n);
-                for (c = 0; c < 3; c++)
-                    for (r = 0; r < 3; r++)
-                        vn[m->t[i].v[c] * 3 + (size_t)r] += o->flip ? -n[r] : n[r];
-            }
-            for (i = 0; i < m->nv; i++)
-                normalize3(&vn[i * 3]);
-        }
+    if (om.vnrm) {
         sprintf(buf, "static const int16_t %s_vertex_normals[%zu]", name, m->nv * 3);
         emit_begin(&e, fc, buf);
-        for (i = 0; i < m->nv * 3; i++) {
-            char s[16];
-            sprintf(s, "%d", q14(vn[i]));
-            emit_val(&e, s);
-        }
+        emit_i16(&e, om.vnrm, m->nv * 3);
         emit_end(&e);
-        free(vn);
     }
 
     fprintf(fc, "const zs_mesh %s = {\n", name);
     fprintf(fc, "    %s_positions,\n    %s_indices,\n", name, name);
-    if (has_fc)
+    if (om.fcol)
         fprintf(fc, "    %s_face_colors,\n", name);
     else
         fprintf(fc, "    NULL, /* face_colors */\n");
-    if (has_vc)
+    if (om.vcol)
         fprintf(fc, "    %s_vertex_colors,\n", name);
     else
         fprintf(fc, "    NULL, /* vertex_colors */\n");
-    if (has_fn)
+    if (om.fnrm)
         fprintf(fc, "    %s_face_normals,\n", name);
     else
         fprintf(fc, "    NULL, /* face_normals */\n");
-    if (has_vn)
+    if (om.vnrm)
         fprintf(fc, "    %s_vertex_normals,\n", name);
     else
         fprintf(fc, "    NULL, /* vertex_normals */\n");
-    {
-        uint32_t col = o->base_color;
-        if (o->colors == COL_MATERIAL && !has_fc && m->nt)
-            col = m->t[0].color;
-        fprintf(fc, "    %ld, /* scale, Q16.16 */\n    %zuu, /* vertex_count */\n"
-                    "    %zuu, /* triangle_count */\n    0x%06lXu /* color */\n};\n",
-                qscale, m->nv, m->nt, (unsigned long)col);
-    }
+    fprintf(fc, "    %ld, /* scale, Q16.16 */\n    %zuu, /* vertex_count */\n"
+                "    %zuu, /* triangle_count */\n    0x%06lXu /* color */\n};\n",
+            qscale, m->nv, m->nt, (unsigned long)om.color);
     if (fclose(fc) != 0)
         die(EXIT_IO, "cannot write %s", cpath);
     free(cpath);
@@ -952,6 +1109,7 @@ static void write_files(const options *o, const model *m, const char *name, long
     free(guard);
     free(upper);
     free(buf);
+    free_output(&om);
 }
 
 /* ------------------------------------------------------------------ */
@@ -965,6 +1123,8 @@ static void usage(FILE *f)
         "Converts any model assimp reads into NAME.c + NAME.h holding a zs_mesh\n"
         "(int16 positions with a Q16.16 scale, uint16 indices).\n\n"
         "  -o, --output BASE     write BASE.c and BASE.h (default: ./NAME)\n"
+        "      --format c|zsm    c (default): BASE.c + BASE.h; zsm: BASE.zsm, a binary\n"
+        "                        mesh that zspan-sim render reads directly\n"
         "  -n, --name NAME       C identifier of the zs_mesh (default: from the file name)\n"
         "      --center          move the bounding-box centre to the origin\n"
         "      --fit R           scale so the largest vertex distance from the origin is R\n"
@@ -984,12 +1144,16 @@ static void usage(FILE *f)
         "      --no-merge        keep the importer's vertices (default: merge vertices\n"
         "                        with identical positions and output attributes)\n"
         "      --flip-winding    reverse every triangle (front faces must be CCW)\n"
+        "      --up-axis AXIS    the file's up axis (x, y, z, -x, -y, -z): turned to +y\n"
+        "                        (default auto: the file's metadata, e.g. FBX, else y)\n"
         "      --lenient         convert even if the importer reported errors\n"
         "      --info            print statistics only; write nothing\n"
         "      --mem-limit MB    address-space limit while importing (default 2048 MB +\n"
         "                        256 x the file size; 0 = no limit)\n"
         "  -q, --quiet           no warnings\n"
-        "  -h, --help            this text\n\n"
+        "  -h, --help            this text\n"
+        "      --version         the version\n\n"
+        "An import running longer than 30 s ($ZSPAN_IMPORT_SECONDS) is stopped.\n"
         "Exit status: 0 ok, 2 usage, 3 unreadable/invalid/empty model, 4 over a limit,\n"
         "5 cannot write the output.\n");
 }
@@ -1049,6 +1213,16 @@ static void parse_args(int argc, char **argv, options *o)
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
             usage(stdout);
             exit(0);
+        } else if (zs_opt_version(a, g_prog)) {
+            exit(0);
+        } else if (str_arg(argc, argv, &i, "--up-axis", NULL, &v)) {
+            if (zs_opt_up_axis(OPT_PROG, "--up-axis", v, &o->up_axis) != 0)
+                exit(EXIT_USAGE);
+        } else if (str_arg(argc, argv, &i, "--format", NULL, &v)) {
+            static const char *const formats[] = {"c", "zsm"};
+            if (zs_opt_choice(OPT_PROG, "--format", v, formats, 2, &k) != 0)
+                exit(EXIT_USAGE);
+            o->zsm = k == 1;
         } else if (str_arg(argc, argv, &i, "--output", "-o", &o->output) ||
                    str_arg(argc, argv, &i, "--name", "-n", &o->name)) {
             continue;
@@ -1107,8 +1281,10 @@ static void parse_args(int argc, char **argv, options *o)
         usage(stderr);
         exit(EXIT_USAGE);
     }
-    if (o->name && !valid_ident(o->name)) {
-        fprintf(stderr, "%s: error: --name '%s' is not a C identifier\n", g_prog, o->name);
+    if (o->name && ident_problem(o->name) != NULL) {
+        fprintf(stderr, "%s: error: --name '%s' %s; choose another, e.g. mesh_%s\n", g_prog,
+                o->name, ident_problem(o->name),
+                valid_ident(o->name) && o->name[0] != '_' ? o->name : "model");
         exit(EXIT_USAGE);
     }
 }

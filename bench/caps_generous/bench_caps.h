@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Generous pool capacities, used only by the host run that measures the
  * real ones (build/bench/bench_caps writes build/bench/gen/bench_caps.h). */
 #ifndef ZSPAN_BENCH_CAPS_H

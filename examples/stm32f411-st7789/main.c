@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Example: the zspan demo scene (app/demo_scene.h) orbiting on a 240x240
  * ST7789 module driven by an STM32F411 (board: ports/cortex-m/stm32f411/),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Emulated display controllers: MIPI-DCS (ST7789, ILI9341, ST7735, GC9A01,
  * ILI9488) and SSD1351, fed with the bytes of the SPI wire. See emu.h. */
 #include "emu.h"

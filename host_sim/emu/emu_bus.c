@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* zspan bus port feeding an emulated panel, blocking or asynchronous. */
 #include "emu_bus.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * A zspan bus (zspan/bus.h) whose wire ends in an emulated panel.
  *

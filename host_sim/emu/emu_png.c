@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* 8-bit RGB PNG writer for the emulated panels (libpng). */
 #include <png.h>
 #include <stdio.h>

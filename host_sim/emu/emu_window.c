@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* SDL2 window for the emulated panels. */
 #include "emu_window.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * A live window (SDL2) that shows what an emulated panel shows.
  * emu_window_open returns NULL (and a reason in err) when no display is

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan bus interface: how a panel driver talks to a display controller.
  *

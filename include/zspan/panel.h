@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan panel drivers: common code (geometry, rotation, windows, pixel
  * writes) over one operations table per controller command set (MIPI DCS,

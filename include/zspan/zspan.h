@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan: a fixed-point, no-malloc visible-surface renderer that draws a 3D
  * triangle scene one row (or band of rows) at a time into a caller's buffer.
@@ -39,6 +40,13 @@
  */
 #ifndef ZSPAN_ZSPAN_H
 #define ZSPAN_ZSPAN_H
+
+/* Version of the library (semantic versioning; 0.x: the API may still change
+ * between minor versions). CHANGELOG.md lists what changed. */
+#define ZSPAN_VERSION_MAJOR 0
+#define ZSPAN_VERSION_MINOR 4
+#define ZSPAN_VERSION_PATCH 0
+#define ZSPAN_VERSION_STRING "0.4.0"
 
 #include <stddef.h>
 #include <stdint.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* QEMU mps2-an386: Cortex-M4, 25 MHz system clock (SysTick at 40 ns).
  * PORT_BOARD_NAME / PORT_CPU_NAME let the benchmark tag a build of Cortex-M0
  * code run on this machine (same instructions, more RAM). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Smoke test of the port: semihosting output, command line, SysTick
  * calibration, stack painting, exit status. */
 #include "port.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan Cortex-M port: the minimal board layer the firmware images use.
  *

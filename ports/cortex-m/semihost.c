@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* ARM semihosting for Cortex-M (bkpt 0xAB), plus a small printf. */
 #include "port.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Reset and vector table for the QEMU Cortex-M boards (and any ARMv6-M/v7-M
  * part with the same layout): copy .data, zero .bss, paint the stack, call
  * main, report faults through semihosting. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* SysTick as a 64-bit tick counter, and the calibration against a loop of
  * known instruction count (under qemu -icount the ratio is exact). */
 #include "port.h"

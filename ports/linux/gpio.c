@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * GPIO output lines through libgpiod: the v1 API (Debian 12 ships 1.6) or
  * the v2 API, chosen at build time (mk/ports.mk defines ZS_GPIOD_V2 when

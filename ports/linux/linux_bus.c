@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan Linux port: spidev (or bit-banged SPI) + libgpiod lines as a zs_bus.
  */

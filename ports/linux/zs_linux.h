@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan Linux port: a zs_bus over spidev (or bit-banged SPI on GPIO lines),
  * with D/C, reset and backlight on GPIO lines through libgpiod (v1 or v2 API,

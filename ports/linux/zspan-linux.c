@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan-linux: the demo scene (or a mesh file) on an SPI panel wired to a
  * Linux board: spidev for the data, libgpiod lines for D/C, reset and the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * MCP2210 protocol (command/response reports) and the zs_bus on top of it.
  * Report layouts from the MCP2210 datasheet (DS22288A, section 3).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The MCP2210 through hidapi (Debian: libhidapi-hidraw0, the hidraw backend).
  * The MCP2210 has no report IDs, so every output report goes out with a

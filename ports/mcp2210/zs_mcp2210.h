@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan MCP2210 port: a zs_bus over the Microchip MCP2210 USB-to-SPI bridge
  * (USB HID, VID 0x04D8, PID 0x00DE) through hidapi.

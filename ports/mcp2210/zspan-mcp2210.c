@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan-mcp2210: the demo scene (or a mesh file) on an SPI panel behind a
  * Microchip MCP2210 USB-to-SPI bridge, through hidapi (hidraw).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The application layer (app/): option parsing, renderer sizing, the panel
  * programs' command-line driver and the demo scene's frame steps. Built
@@ -215,12 +216,68 @@ static void test_demo_steps(void **state)
     zs_scene_free(&s);
 }
 
+/* --seq patterns: exactly one integer conversion; the name has the number. */
+static void test_seq_patterns(void **state)
+{
+    static const char *const bad[] = {"%s.png", "f.png", "f_%d%d", "%ld", "%n", "%5$d", "%*d",
+                                      "%.*d", "%#d", "%x", "%1234d", "f_%", "%%", "%c"};
+    char buf[64];
+    size_t k;
+    (void)state;
+    for (k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        if (zs_opt_seq_pattern(PROG, "--seq", bad[k]) != -1)
+            fail_msg("'%s' accepted", bad[k]);
+        assert_int_equal(zs_opt_seq_path(buf, sizeof buf, bad[k], 7), -1);
+    }
+    assert_int_equal(zs_opt_seq_pattern(PROG, "--seq", "out/f_%03d.png"), 0);
+    assert_int_equal(zs_opt_seq_path(buf, sizeof buf, "out/f_%03d.png", 7), 0);
+    assert_string_equal(buf, "out/f_007.png");
+    assert_int_equal(zs_opt_seq_path(buf, sizeof buf, "a%%b_%-4u|", 42), 0);
+    assert_string_equal(buf, "a%b_42  |");
+    assert_int_equal(zs_opt_seq_path(buf, sizeof buf, "%+.3i%%", 5), 0);
+    assert_string_equal(buf, "+005%");
+    /* Too long for the buffer: refused, not cut. */
+    assert_int_equal(zs_opt_seq_path(buf, 8, "abcdef_%d", 123), -1);
+    assert_int_equal(zs_opt_seq_path(buf, 10, "abcdef_%d", 12), 0);
+    assert_string_equal(buf, "abcdef_12");
+}
+
+/* --version, up axes, and the panel options checked before a device opens. */
+static void test_version_axis_check(void **state)
+{
+    zs_app_opts o;
+    int up = -1;
+    (void)state;
+    assert_int_equal(zs_opt_version("--version", PROG), 1);
+    assert_int_equal(zs_opt_version("--versio", PROG), 0);
+    assert_int_equal(zs_opt_up_axis(PROG, "--up-axis", "z", &up), 0);
+    assert_int_equal(up, 3);
+    assert_int_equal(zs_opt_up_axis(PROG, "--up-axis", "-y", &up), 0);
+    assert_int_equal(up, 5);
+    assert_int_equal(zs_opt_up_axis(PROG, "--up-axis", "+x", &up), 0);
+    assert_int_equal(up, 1);
+    assert_int_equal(zs_opt_up_axis(PROG, "--up-axis", "w", &up), -1);
+    assert_int_equal(up, 1);
+    zs_app_defaults(&o, 1);
+    assert_int_equal(zs_app_check(&o, PROG), 0);
+    o.panel = "nosuch";
+    assert_int_equal(zs_app_check(&o, PROG), -1);
+    o.panel = "ili9488";
+    o.format = ZS_FMT_RGB565_BE; /* ili9488 takes only RGB666 over SPI */
+    o.format_set = 1;
+    assert_int_equal(zs_app_check(&o, PROG), -1);
+    o.format_set = 0;
+    assert_int_equal(zs_app_check(&o, PROG), 0);
+    zs_app_free(&o);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_value_forms),     cmocka_unit_test(test_numbers),
         cmocka_unit_test(test_words_and_colours), cmocka_unit_test(test_sizing),
         cmocka_unit_test(test_command_line),    cmocka_unit_test(test_demo_steps),
+        cmocka_unit_test(test_seq_patterns),    cmocka_unit_test(test_version_axis_check),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_api: bad arguments and calls out of order at the public API. Every
  * status code that the header documents for a bad argument is provoked and

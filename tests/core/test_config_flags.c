@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Config flags that leave features out to save RAM: the arena shrinks by
  * the documented amounts, the features left out are refused with
  * ZS_ERR_MODE, and what remains renders exactly as the full renderer does. */

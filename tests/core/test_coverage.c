@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_coverage: single random triangles, each rendered alone in ID16, in both
  * visibility modes. The set of pixels carrying the triangle's tag must equal,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_extremes: rendering at the extremes of its input. Every frame is
  * rendered through guarded buffers (zt_render_guarded: guard bytes around

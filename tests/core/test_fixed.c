@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_fixed: fixed-point primitives against exact integer or double oracles.
  *

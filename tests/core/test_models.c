@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* LIBS: -lassimp */
 /*
  * test_models: span == zline, byte for byte, on real meshes from Debian's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_modes: the spanning-scanline mode and the scanline z-buffer mode must
  * produce byte-identical output, for every pixel format, flat and Gouraud,

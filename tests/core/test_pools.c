@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_pools: every pool of the arena overflowed (triangle records, vertices,
  * active edges, and all of them at once with tiny random capacities). The

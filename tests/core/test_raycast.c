@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_raycast: random scenes (20-60 triangles: penetrating, abutting,
  * duplicated, crossing the near plane, large tilted planes) rendered in ID16

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Regression tests for bugs found in review (each failed before its fix). */
 #include <setjmp.h>
 #include <stdarg.h>

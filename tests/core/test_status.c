@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_status: the status codes and their texts. The oracle is the header
  * itself: the test reads include/zspan/zspan.h, takes the zs_status

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_tiling: meshes that tile a region exactly must cover every pixel of the
  * region exactly once (no cracks, no double hits), in both visibility modes.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Firmware test: frame 0 of the sphere285 benchmark scene, both visibility
  * modes, on the Cortex-M4 (QEMU mps2-an386) and Cortex-M0 (QEMU microbit,

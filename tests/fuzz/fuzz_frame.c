@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fuzz_frame: whole zspan frames from arbitrary bytes (libFuzzer).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fuzz_mcp2210: the MCP2210 port's response handling (ports/mcp2210/mcp2210.c)
  * against a chip whose answers come from the fuzz input (libFuzzer).

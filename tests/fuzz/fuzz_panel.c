@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fuzz_panel: the emulated display controllers (host_sim/emu/emu.c) decoding
  * arbitrary wire streams (libFuzzer).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Shared helpers of the zspan fuzz harnesses: a byte reader that never fails
  * (missing bytes read as zero, so every input decodes to something) and a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gen_seeds: writes the starting seeds of a harness into a directory
  * (make fuzz-seeds: tests/fuzz/corpus/{frame,panel}/seed-*).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * src/span.c as it is, compiled with its two span fills routed through a
  * counter, for the fuzz build of the core only (build/fuzz/: this object

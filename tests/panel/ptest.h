@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared helpers of the panel test suites (header only). */
 #ifndef ZSPAN_TESTS_PANEL_PTEST_H
 #define ZSPAN_TESTS_PANEL_PTEST_H

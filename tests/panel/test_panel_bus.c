@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The bus layer on its own: counters, chunking, the async ownership rules,
  * reset/backlight/delay hooks and the wire-time formula. */
 #include "ptest.h"

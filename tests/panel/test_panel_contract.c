@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The contract the panel and bus API check:
  *
  *  - zs_panel_stream refuses a renderer whose size or frame format is not the

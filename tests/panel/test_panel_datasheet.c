@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The bytes each driver puts on the wire, checked against the controllers'
  * datasheet values: command bytes, parameter counts, COLMOD and MADCTL
  * values, big-endian inclusive window coordinates with the module's RAM

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Panel driver -> bus -> emulated panel with synthetic pictures (no renderer):
  * for every panel, pixel format and rotation the picture the viewer sees
  * equals the picture sent, pixel for pixel. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The emulated controllers catch protocol errors (each bad stream raises its
  * flag, a good one none) and honour the commands a driver relies on:
  * windows with wrap-around, RAMWRC, MADCTL, COLMOD, inversion, offsets. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The full path: renderer -> frame streamer -> driver -> bus -> emulated
  * panel. For every panel, pixel format and rotation the picture on the
  * emulated glass equals the picture the core renders into a plain buffer, and

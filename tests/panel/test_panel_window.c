@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The simulator's live window: under a private Xvfb server the SDL2 window
  * opens, shows a frame of an emulated panel, and a screenshot of it (taken
  * from the X server, not from SDL) equals the PNG written for the same frame,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* MCP2210 model (see mcp2210_model.h). Report layouts: datasheet DS22288A, section 3. */
 #define _GNU_SOURCE
 #include "mcp2210_model.h"

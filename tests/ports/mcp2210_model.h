@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * A model of the Microchip MCP2210 USB-to-SPI bridge, as far as a display
  * needs it, wired to an emulated panel (host_sim/emu):

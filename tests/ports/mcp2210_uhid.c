@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mcp2210-uhid: the MCP2210 model as a real HID device through /dev/uhid.
  * The kernel's hid core + hid-generic + hidraw turn it into /dev/hidrawN with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The VM's static MCP2210 model never writes PNG files: no libpng in it. */
 #include "emu.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Helpers shared by the port tests (see ports_common.h). */
 #include "ports_common.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Helpers shared by the port tests: the expected picture of a demo frame. */
 #ifndef ZSPAN_TEST_PORTS_COMMON_H
 #define ZSPAN_TEST_PORTS_COMMON_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Stand-in for a port test whose libraries were not installed at build time
  * (SKIP_WHAT names the suite, SKIP_WHY the reason): every test is skipped
  * with the reason. `make deps` installs what the real suite needs. */

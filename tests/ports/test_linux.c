@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The Linux port (spidev + libgpiod) against emulated devices: the real
  * libgpiod 1.6 and the port's real open/ioctl calls, with umockdev's preload

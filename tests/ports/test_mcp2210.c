@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The MCP2210 port against the chip model, in process (the zs_hid_ops seam
  * instead of hidapi; test_mcp2210_vm runs the same code over the real

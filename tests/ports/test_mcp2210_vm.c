@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan-mcp2210 through the real stack: hidapi (hidraw backend) -> the Linux
  * kernel's hidraw -> uhid -> the MCP2210 model (a userspace HID device) ->

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Tests of the mesh converter (build/zspan-meshc).
  *
@@ -498,7 +499,7 @@ static void test_fuzz_regressions(void **state)
     assert_true(res.exited && res.status == 0);
     run(&res, "ZSPAN_MESHC_IMPORT_SECONDS=2 '%s' -q -o '%s/hang' '%s/ply-hang.ply'", MESHC, dir,
         TOOLS_DATA);
-    expect_error("importer hang", &res, 3, "did not finish in time");
+    expect_error("importer hang", &res, 3, "did not finish in");
     run(&res, "rm -rf '%s'", dir);
 }
 

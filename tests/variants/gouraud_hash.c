@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Renders a Gouraud, fogged cube in every colour format and prints a hash of
  * the pixels. Built twice, against the core compiled for speed (-O2) and for
  * size (-Os, which takes other code paths in shade.c): the hashes must match. */

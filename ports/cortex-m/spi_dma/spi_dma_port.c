@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Generic SPI + DMA bus port; see spi_dma_port.h. Freestanding C99. */
 #include "spi_dma_port.h"
 

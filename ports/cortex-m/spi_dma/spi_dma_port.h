@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Generic SPI + DMA port of the zspan bus (include/zspan/bus.h) for any
  * Cortex-M with a memory-mapped SPI and a DMA channel that can feed its

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Board layer of the STM32F411 ("Black Pill" STM32F411CEU6 or Nucleo-F411RE)
  * with an SPI panel on SPI1 + DMA2 stream 3 (see board_f411.h); the example

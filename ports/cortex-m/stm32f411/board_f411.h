@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The STM32F411 board interface: what an application on this board needs
  * from the port. Freestanding C99.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Reset and vector table of the STM32F411 example (16 system vectors and the
  * 86 interrupts of RM0383's vector table; only SysTick and DMA2 stream 3 are
  * used). */

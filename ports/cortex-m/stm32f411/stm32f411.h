@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The few STM32F411 registers the example uses (RM0383, STM32F411xC/E
  * reference manual; addresses and bits from its memory map and register

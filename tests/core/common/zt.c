@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared helpers for the zspan core tests: see zt.h. */
 #include "zt.h"
 

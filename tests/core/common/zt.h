@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zt: shared helpers for the zspan core test suites.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared cmocka scaffolding of the core suites: see zt_test.h. */
 #include "zt_test.h"
 

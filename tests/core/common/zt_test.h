@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* cmocka glue for the zspan core suites. */
 #ifndef ZT_TEST_H
 #define ZT_TEST_H

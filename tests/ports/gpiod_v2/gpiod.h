@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Declarations of the libgpiod v2 (2.x) functions ports/linux/gpio.c uses,
  * written from libgpiod 2's documented API, for `make check-gpiod-v2`: a

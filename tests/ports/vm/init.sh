@@ -1,4 +1,5 @@
 #!/bin/busybox sh
+# SPDX-License-Identifier: MIT
 # /init of the MCP2210 test VM (see run_vm.sh). Each phase starts the model
 # on /dev/uhid, waits for its hidraw node, runs the real zspan-mcp2210
 # (hidapi, hidraw backend) against it, then stops the model, which dumps the

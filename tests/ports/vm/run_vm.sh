@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Boots Debian's kernel under qemu-system-x86_64 (software emulation) with a
 # tiny initramfs: busybox, the hid/uhid/hid-generic modules of that kernel,
 # the MCP2210 model on /dev/uhid (static) and zspan-mcp2210 (dynamic, with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The scaling benchmark: how the cost of a frame grows with the triangle
  * count and the screen size (make bench; bench/run_scale.sh drives it).

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The scaling benchmark (bench/bench_scale.c): statistics, callgrind counts
 # and the Markdown section "How cost grows".
 #

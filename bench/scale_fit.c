@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Weighted linear least squares for the scaling benchmark; see scale_fit.h. */
 #include "scale_fit.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Least-squares fit of a linear cost model for the scaling benchmark
  * (bench/bench_scale.c): instructions ~= sum_j coef[j] * x[j] over the runs.

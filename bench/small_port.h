@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What bench/small_scene.c needs from a board (bench/small_port_*.c adapt a port). */
 #ifndef ZSPAN_SMALL_PORT_H
 #define ZSPAN_SMALL_PORT_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench/small_scene.c on the AVR board layer (ports/avr). */
 #include "avr_port.h"
 #include "small_port.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench/small_scene.c on the host: the reference checksums. */
 #include "small_port.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * A scene small enough for an 8 KB AVR (ATmega2560): three cubes, two of them
  * cutting into each other, and an octahedron with vertex colours and normals,

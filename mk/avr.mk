@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # mk/avr.mk: the AVR target, an ATmega2560 (8 KB RAM, 16-bit int) under simavr, built with
 # Debian's gcc-avr and avr-libc. bench/small_scene.c (three cubes and an octahedron at
 # 160x128, flat and Gouraud, both visibility modes) runs on the host and on the AVR; every

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # mk/firmware_scale.mk: the scaling benchmark (how the cost of a frame grows
 # with triangles and screen size; bench/bench_scale.c, bench/run_scale.sh).
 # It links the bench scenes of mk/firmware.mk and adds its section to that

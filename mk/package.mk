@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # mk/package.mk: installing the libraries (make install), the pkg-config file, and
 # the packaging tests (a project outside the tree that takes zspan in through
 # zspan.mk, CMake add_subdirectory / FetchContent, find_package and pkg-config;

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # mk/riscv.mk: the RISC-V target, RV32IMC code on QEMU's sifive_e machine (16 KB RAM,
 # like an ESP32-C3-class part), built with Debian's gcc-riscv64-unknown-elf and picolibc.
 # The benchmark image is bench/bench_fw.c on the board layer of ports/riscv/ (the same

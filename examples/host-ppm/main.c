@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Example: one frame of two cubes cutting into each other, rendered on the
  * host into a PPM file, band by band; nothing but zspan and the C library.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Example: a spinning cube on a 240x240 ST7789 wired to a Linux board's SPI
  * (spidev) with D/C and reset on GPIO lines (libgpiod), through the Linux

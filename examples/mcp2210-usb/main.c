@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Example: a turning cube on a 240x240 ST7789 behind a Microchip MCP2210
  * USB-to-SPI bridge (hidapi, hidraw), through the MCP2210 port (ports/mcp2210)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* ATmega2560 board layer for simavr: USART0 stdout, GPIOR markers, RAM figures. */
 #include "avr_port.h"
 

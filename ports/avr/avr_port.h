@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan AVR port: the minimal board layer of the ATmega2560 images run under
  * simavr (8 KB RAM, 16-bit int). avr-libc; stdout on USART0; markers and the

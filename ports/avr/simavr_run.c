@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Runs an AVR image under libsimavr and counts its cycles exactly.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* QEMU sifive_e (SiFive E31-class RV32IMAC, 16 KB RAM): one tick = one instruction. */
 #include "port.h"
 

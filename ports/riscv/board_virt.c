@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* QEMU virt with RV32 code: the same images with 256 KB of RAM, for the benchmark
  * scenes that do not fit the sifive_e's 16 KB (same instructions, more room). */
 #include "port.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan RISC-V port: the board layer the benchmark images use on RV32 parts
  * (QEMU's sifive_e: 16 KB RAM at 0x80000000, code at 0x20400000), the same

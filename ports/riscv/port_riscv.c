@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* RISC-V board layer on picolibc: semihosted stdio, minstret, RAM figures. */
 #include "port.h"
 

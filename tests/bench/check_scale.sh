@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # make test-bench-scale: a short run of the scaling benchmark (the six small
 # cases of `bench_scale list --quick`, 2 frames each, both modes, under
 # callgrind) into DIR. Checks that the tool runs end to end and that its

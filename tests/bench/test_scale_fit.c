@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The least-squares fit of the scaling benchmark (bench/scale_fit.c) against
  * independent oracles: exact recovery of known coefficients, the weighted

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_shortcuts: regression tests for the span engine's shortcuts (issue
  * 11), each against oracles that do not take the shortcut. Every frame that

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Runs an Arduino Mega 2560 sketch image under libsimavr with an emulated
  * ST7789 240x240 (host_sim/emu) on its SPI pins, until the panel has received

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # check-arduino: the Arduino library folder follows the library specification's layout
 # rules (1.5 format), library.json is valid PlatformIO metadata, and every example
 # compiles with Debian's arduino-builder for an ATmega2560 board.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # check-package-metadata: the plain-metadata files parse and agree with VERSION:
 # library.properties, library.json, idf_component.yml (ESP-IDF), zephyr/module.yml
 # (Zephyr), CMakeLists.txt (reads VERSION), zspan.pc (make install). What they
@@ -10,6 +11,9 @@ import yaml
 bad = []
 version = open("VERSION").read().strip()
 if not re.fullmatch(r"\d+\.\d+\.\d+", version): bad.append("VERSION %r is not MAJOR.MINOR.PATCH" % version)
+hdr = open("include/zspan/zspan.h").read()
+m = re.search(r'#define ZSPAN_VERSION_STRING "([^"]+)"', hdr)
+if not m or m.group(1) != version: bad.append("include/zspan/zspan.h ZSPAN_VERSION_STRING %r" % (m and m.group(1)))
 props = dict(l.split("=", 1) for l in open("library.properties").read().splitlines() if "=" in l)
 if props.get("version") != version: bad.append("library.properties version %r" % props.get("version"))
 lj = json.load(open("library.json"))

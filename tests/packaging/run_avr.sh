@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The AVR image (ATmega2560 under simavr) against the same program on the host.
 #
 #   run_avr.sh test IMAGE HOST   (make test-avr) every frame's checksum equals the host's,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # A project outside the tree (tests/packaging/external + examples/host-ppm/main.c, copied
 # to a temporary directory) takes zspan in one way, builds, runs, and must print the same
 # checksum and write the same PPM as the in-tree build of the example (REF, a program).

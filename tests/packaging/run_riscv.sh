@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The RISC-V benchmark image under QEMU sifive_e against the host.
 #
 #   run_riscv.sh quick IMAGE   frame 0 of the first scene, both modes (make test-riscv):

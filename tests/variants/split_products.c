@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The products Cortex-M0 builds form from 32-bit halves (zs_mul64_small,
  * zs_umul32, zs_smul32 with ZS_SPLIT_PRODUCTS) must equal plain 64-bit
  * products, and a core built with them must render what the plain core does.

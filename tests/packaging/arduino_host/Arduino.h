@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The few Arduino calls the examples use, on the host, for the packaging test:
  * examples/arduino/SpinningCubeST7789 built with g++ against this file drives

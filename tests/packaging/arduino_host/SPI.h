@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The Arduino SPI API as far as the examples use it (see Arduino.h here). */
 #ifndef ZSPAN_TEST_SPI_H
 #define ZSPAN_TEST_SPI_H

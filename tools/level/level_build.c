@@ -95,6 +95,11 @@ static int breaks_at(const lv_level *lv, int c, int m, int *out)
     return j;
 }
 
+static long cross2(const int *a, const int *b, const int *c)
+{
+    return (long)(b[0] - a[0]) * (c[1] - a[1]) - (long)(b[1] - a[1]) * (c[0] - a[0]);
+}
+
 static zs_color shade(zs_color c, int num, int den)
 {
     uint32_t r = ((c >> 16) & 255u) * (uint32_t)num / (uint32_t)den;
@@ -136,33 +141,51 @@ static void cell_mesh(const lv_level *lv, int c, mesh_acc *m)
     const lv_cell *cell = &lv->cells[c];
     zs_color base = k_palette[(unsigned)c * 5u % 8u];
     zs_color floor_col = (c & 1) ? ZS_RGB(90, 90, 100) : ZS_RGB(120, 110, 95);
-    int k, i0 = -1;
+    int k;
     int (*br)[16] = malloc(sizeof *br * (size_t)cell->nv);
     int *nbr = malloc(sizeof(int) * (size_t)cell->nv);
     for (k = 0; k < cell->nv; k++)
         nbr[k] = breaks_at(lv, c, k, br[k]);
-    /* floor and ceiling: a fan from a corner, leaving out the zero-area
-     * triangles that collinear points on the sides make */
-    for (k = 0; k < cell->nv && i0 < 0; k++) {
-        const int *p = lv->xy[cell->v[(k + cell->nv - 1) % cell->nv]], *q = lv->xy[cell->v[k]],
-                  *r = lv->xy[cell->v[(k + 1) % cell->nv]];
-        if ((long)(q[0] - p[0]) * (r[1] - p[1]) - (long)(q[1] - p[1]) * (r[0] - p[0]) > 0)
-            i0 = k;
-    }
-    for (k = 1; k + 1 < cell->nv; k++) {
-        const int *p = lv->xy[cell->v[i0]], *q = lv->xy[cell->v[(i0 + k) % cell->nv]],
-                  *r = lv->xy[cell->v[(i0 + k + 1) % cell->nv]];
-        int f0, f1, f2;
-        if ((long)(q[0] - p[0]) * (r[1] - p[1]) - (long)(q[1] - p[1]) * (r[0] - p[0]) == 0)
-            continue;
-        f0 = acc_vertex(m, p[0], cell->floor, p[1]);
-        f1 = acc_vertex(m, q[0], cell->floor, q[1]);
-        f2 = acc_vertex(m, r[0], cell->floor, r[1]);
-        acc_tri(m, f0, f1, f2, floor_col);
-        f0 = acc_vertex(m, p[0], cell->ceiling, p[1]);
-        f1 = acc_vertex(m, q[0], cell->ceiling, q[1]);
-        f2 = acc_vertex(m, r[0], cell->ceiling, r[1]);
-        acc_tri(m, f0, f2, f1, ZS_RGB(215, 215, 205));
+    /* floor and ceiling: ears cut at strictly convex corners, so that every
+     * side of the polygon, collinear points and all, is a triangle edge
+     * shared exactly with the walls (a fan would span a side with collinear
+     * points in one edge: a T-junction, a crack) */
+    {
+        int *ring = malloc(sizeof(int) * (size_t)cell->nv), n = cell->nv;
+        memcpy(ring, cell->v, sizeof(int) * (size_t)n);
+        while (n >= 3) {
+            int pick = -1;
+            for (k = 0; k < n && pick < 0; k++) {
+                const int *p = lv->xy[ring[(k + n - 1) % n]], *q = lv->xy[ring[k]],
+                          *r = lv->xy[ring[(k + 1) % n]];
+                long rest = 0;
+                int j;
+                if (cross2(p, q, r) <= 0)
+                    continue;
+                /* what is left must keep an area (or be nothing) */
+                for (j = 0; j < n; j++)
+                    if (j != k && (j + 1) % n != k)
+                        rest += cross2(lv->xy[ring[(k + 1) % n]], lv->xy[ring[j]],
+                                       lv->xy[ring[(j + 1) % n == k ? (k + 1) % n : (j + 1) % n]]);
+                if (n == 3 || rest > 0)
+                    pick = k;
+            }
+            if (pick < 0)
+                break;
+            {
+                int u = ring[(pick + n - 1) % n], v = ring[pick], w = ring[(pick + 1) % n];
+                const int *p = lv->xy[u], *q = lv->xy[v], *r = lv->xy[w];
+                acc_tri(m, acc_vertex(m, p[0], cell->floor, p[1]),
+                        acc_vertex(m, q[0], cell->floor, q[1]), acc_vertex(m, r[0], cell->floor, r[1]),
+                        floor_col);
+                acc_tri(m, acc_vertex(m, p[0], cell->ceiling, p[1]),
+                        acc_vertex(m, r[0], cell->ceiling, r[1]),
+                        acc_vertex(m, q[0], cell->ceiling, q[1]), ZS_RGB(215, 215, 205));
+            }
+            memmove(ring + pick, ring + pick + 1, sizeof(int) * (size_t)(n - pick - 1));
+            n--;
+        }
+        free(ring);
     }
     for (k = 0; k < cell->nv; k++) {
         int k1 = (k + 1) % cell->nv;

@@ -376,8 +376,14 @@ int lv_parse(const char *text, const char *name, lv_level *lv, char *err, size_t
     free(copy);
     if (rc == 0 && !header)
         rc = fail(err, n, "%s: empty file (the first line must be \"zspan-level 1\")", name);
-    if (rc == 0 && lv_check(lv, msg, sizeof msg) != 0)
-        rc = fail(err, n, "%s: %s", name, msg);
+    if (rc == 0 && lv_check(lv, msg, sizeof msg) != 0) {
+        int at = 0, len = 0;
+        /* "line N: ..." becomes "NAME:N: ..." like the parser's own messages */
+        if (sscanf(msg, "line %d: %n", &at, &len) == 1 && len > 0)
+            rc = fail(err, n, "%s:%d: %s", name, at, msg + len);
+        else
+            rc = fail(err, n, "%s: %s", name, msg);
+    }
     if (rc != 0)
         lv_free(lv);
     return rc;

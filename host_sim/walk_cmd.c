@@ -3,7 +3,7 @@
  * (tools/level, zspan/portal.h) and writes one PNG per frame, with the
  * portal walk's statistics per frame. The path runs from cell 0 to the cell
  * farthest from it (in portal steps) through the midpoints of the portals
- * on the way, at a height every cell's opening allows.
+ * on the way, at a height every cell's opening allows (lv_flight).
  */
 #include "level.h"
 #include "png_out.h"
@@ -85,79 +85,6 @@ static int parse_opts(int argc, char **argv, walk_opts *o)
     return o->level ? 0 : -1;
 }
 
-/* The path: cell centres and portal midpoints from cell 0 to the farthest
- * cell, in plan coordinates (level units). */
-static int build_path(const zs_level *lv, double (*pts)[2], int max)
-{
-    int n = lv->cell_count, *prev = malloc(sizeof(int) * (size_t)n),
-        *queue = malloc(sizeof(int) * (size_t)n), *via = malloc(sizeof(int) * (size_t)n);
-    int head = 0, tail = 0, last = 0, c, k, np = 0, *chain = malloc(sizeof(int) * (size_t)n), nc = 0;
-    for (c = 0; c < n; c++)
-        prev[c] = -2;
-    prev[0] = -1;
-    queue[tail++] = 0;
-    while (head < tail) {
-        const zs_level_cell *cell;
-        c = queue[head++];
-        last = c;
-        cell = &lv->cells[c];
-        for (k = 0; k < cell->portal_count; k++) {
-            int to = lv->portals[cell->first_portal + k].to;
-            if (prev[to] == -2) {
-                prev[to] = c;
-                via[to] = cell->first_portal + k;
-                queue[tail++] = to;
-            }
-        }
-    }
-    for (c = last; c >= 0; c = prev[c])
-        chain[nc++] = c;
-    for (k = nc - 1; k >= 0 && np + 2 <= max; k--) {
-        const zs_level_cell *cell = &lv->cells[chain[k]];
-        double sx = 0, sy = 0;
-        int v;
-        if (k < nc - 1) {
-            const zs_level_portal *p = &lv->portals[via[chain[k]]];
-            pts[np][0] = (p->ax + p->bx) / 2.0;
-            pts[np][1] = (p->ay + p->by) / 2.0;
-            np++;
-        }
-        for (v = 0; v < cell->vertex_count; v++) {
-            sx += lv->vertices[2 * (cell->first_vertex + v)];
-            sy += lv->vertices[2 * (cell->first_vertex + v) + 1];
-        }
-        pts[np][0] = sx / cell->vertex_count;
-        pts[np][1] = sy / cell->vertex_count;
-        np++;
-    }
-    free(prev);
-    free(queue);
-    free(via);
-    free(chain);
-    return np;
-}
-
-/* Point at distance s along the polyline. */
-static void along(double (*pts)[2], int n, double s, double out[2])
-{
-    int i;
-    for (i = 0; i + 1 < n; i++) {
-        double dx = pts[i + 1][0] - pts[i][0], dy = pts[i + 1][1] - pts[i][1];
-        double len = sqrt(dx * dx + dy * dy);
-        if (s <= len || i + 2 == n) {
-            double t = len > 0 ? s / len : 0;
-            if (t > 1)
-                t = 1;
-            out[0] = pts[i][0] + t * dx;
-            out[1] = pts[i][1] + t * dy;
-            return;
-        }
-        s -= len;
-    }
-    out[0] = pts[0][0];
-    out[1] = pts[0][1];
-}
-
 static zs_fixed fx(double v)
 {
     return (zs_fixed)lround(v * 65536.0);
@@ -185,8 +112,8 @@ static int run_walk(int argc, char **argv)
     lv_level lv;
     lv_built b;
     char err[512];
-    double pts[2 * ZS_LEVEL_MAX_CELLS + 2][2], total = 0, eye_h, maxf = -1e9, minc = 1e9;
-    int np, f, c, differ = 0, rc = SIM_EXIT_OK;
+    double (*pe)[3] = NULL, (*pt)[3] = NULL;
+    int f, differ = 0, rc = SIM_EXIT_OK;
     uint8_t *arena, *img, *ref;
     zs_renderer r;
     zs_config cfg;
@@ -202,11 +129,6 @@ static int run_walk(int argc, char **argv)
         lv_free(&lv);
         return SIM_EXIT_FAIL;
     }
-    for (c = 0; c < lv.ncells; c++) {
-        maxf = lv.cells[c].floor > maxf ? lv.cells[c].floor : maxf;
-        minc = lv.cells[c].ceiling < minc ? lv.cells[c].ceiling : minc;
-    }
-    eye_h = maxf + 0.55 * (minc - maxf);
     lv_free(&lv);
     cfg = zs_config_default((uint16_t)o.width, (uint16_t)o.height,
                             (uint16_t)(b.total_tris * 2 > 65535 ? 65535 : b.total_tris * 2),
@@ -219,28 +141,23 @@ static int run_walk(int argc, char **argv)
         rc = SIM_EXIT_FAIL;
         goto done;
     }
-    np = build_path(&b.level, pts, (int)(sizeof pts / sizeof pts[0]));
-    for (c = 0; c + 1 < np; c++)
-        total += hypot(pts[c + 1][0] - pts[c][0], pts[c + 1][1] - pts[c][1]);
+    pe = malloc(sizeof *pe * (size_t)o.frames);
+    pt = malloc(sizeof *pt * (size_t)o.frames);
+    if (lv_flight(&b.level, o.frames, pe, pt) != 0) {
+        fprintf(stderr, SIM_PROG " walk: no height is open in every cell: no path to fly\n");
+        rc = SIM_EXIT_FAIL;
+        goto done;
+    }
     for (f = 0; f < o.frames && rc == SIM_EXIT_OK; f++) {
-        double s = o.frames > 1 ? total * f / (o.frames - 1) : 0, e[2], t[2];
-        double u = b.level.unit / 65536.0;
         zs_camera cam;
         zs_vec3 eye, tgt;
         zs_level_stats ls;
         char path[1024];
-        along(pts, np, s, e);
-        along(pts, np, s + 6.0, t);
-        if (hypot(t[0] - e[0], t[1] - e[1]) < 1e-6) {
-            along(pts, np, s - 1.0, t);
-            t[0] = 2 * e[0] - t[0];
-            t[1] = 2 * e[1] - t[1];
-        }
         if (getenv("ZS_WALK_TRACE"))
             printf("frame %d: eye %.17g %.17g %.17g target %.17g %.17g %.17g (world)\n", f,
-                   e[0] * u, eye_h * u, -e[1] * u, t[0] * u, eye_h * u * 0.9, -t[1] * u);
-        eye = zs_vec3_make(fx(e[0] * u), fx(eye_h * u), fx(-e[1] * u));
-        tgt = zs_vec3_make(fx(t[0] * u), fx(eye_h * u * 0.9), fx(-t[1] * u));
+                   pe[f][0], pe[f][1], pe[f][2], pt[f][0], pt[f][1], pt[f][2]);
+        eye = zs_vec3_make(fx(pe[f][0]), fx(pe[f][1]), fx(pe[f][2]));
+        tgt = zs_vec3_make(fx(pt[f][0]), fx(pt[f][1]), fx(pt[f][2]));
         if (zs_camera_look_at(&cam, eye, tgt, zs_vec3_make(0, ZS_FX_ONE, 0)) != ZS_OK ||
             zs_camera_perspective(&cam, ZS_FX(70), ZS_FX_ONE / 20, ZS_FX(200)) != ZS_OK) {
             fprintf(stderr, SIM_PROG " walk: bad camera at frame %d\n", f);
@@ -287,6 +204,8 @@ static int run_walk(int argc, char **argv)
     if (rc == SIM_EXIT_OK && differ)
         rc = SIM_EXIT_FAIL;
 done:
+    free(pe);
+    free(pt);
     free(arena);
     free(img);
     free(ref);

@@ -21,7 +21,7 @@ SIM_EXTRA_CFLAGS += -Itools/level
 
 $(LEVEL_TOOL): tools/zspan-level.c $(LEVEL_LIB_SRCS) $(LEVEL_LIB_HDRS) $(LIB) | deps
 	@mkdir -p $(@D)
-	$(CC) $(LEVEL_CFLAGS) -o $@ tools/zspan-level.c $(LEVEL_LIB_SRCS) $(LIB)
+	$(CC) $(LEVEL_CFLAGS) -o $@ tools/zspan-level.c $(LEVEL_LIB_SRCS) $(LIB) -lm
 
 $(LEVEL_TEST): tests/tools/test_level.c $(LEVEL_LIB_SRCS) $(LEVEL_LIB_HDRS) $(ASAN_LIB) | deps
 	@mkdir -p $(@D)
@@ -30,3 +30,46 @@ $(LEVEL_TEST): tests/tools/test_level.c $(LEVEL_LIB_SRCS) $(LEVEL_LIB_HDRS) $(AS
 
 check-portals-full: $(LEVEL_TEST)
 	LEVEL_TEST_FULL=1 $(LEVEL_TEST)
+
+# --- the M4 bench scene: a generated building floor and its flight ---------------
+PORTALS_BENCH_DIR := $(BUILD)/bench/level
+PORTALS_BENCH_LVL := $(PORTALS_BENCH_DIR)/bench.lvl
+PORTALS_BENCH_GEN := $(PORTALS_BENCH_DIR)/bench_level.c
+PORTALS_FW_M4 := $(FW_BUILD)/bench-portals-mps2-an386.elf
+PORTALS_FW_OBJS := $(FW_BUILD)/m4/portals/bench_portals_fw.o $(FW_BUILD)/m4/portals/bench_level.o \
+                   $(patsubst %.c,$(FW_BUILD)/m4/app/%.o,$(PORT_SRCS)) \
+                   $(FW_BUILD)/m4/app/$(PORT_DIR)/board_mps2_an386.o
+ALL_TARGETS += $(PORTALS_FW_M4)
+BENCH_TARGETS += bench-portals
+TEST_TARGETS += check-portals-m4
+.PHONY: bench-portals check-portals-m4
+
+$(PORTALS_BENCH_LVL): $(LEVEL_TOOL)
+	@mkdir -p $(@D)
+	$(LEVEL_TOOL) gen building 8x6 7 -o $@
+$(PORTALS_BENCH_GEN): $(PORTALS_BENCH_LVL) $(LEVEL_TOOL)
+	$(LEVEL_TOOL) c $< -n bench_level -o $(basename $@) -p 8
+$(PORTALS_BENCH_GEN:.c=.h): $(PORTALS_BENCH_GEN) ;
+
+$(FW_BUILD)/m4/portals/bench_portals_fw.o: bench/bench_portals_fw.c $(PORTALS_BENCH_GEN:.c=.h) \
+                                           $(PORT_HDRS) include/zspan/portal.h | deps
+	@mkdir -p $(@D)
+	$(ARM_CC) $(FW_M4_CPU) -O2 $(FW_COMMON) -I$(PORTALS_BENCH_DIR) -c $< -o $@
+$(FW_BUILD)/m4/portals/bench_level.o: $(PORTALS_BENCH_GEN) include/zspan/portal.h | deps
+	@mkdir -p $(@D)
+	$(ARM_CC) $(FW_M4_CPU) -O2 $(FW_COMMON) -c $< -o $@
+$(PORTALS_FW_M4): $(PORTALS_FW_OBJS) $(FW_CORE_M4_OBJS) $(PORT_DIR)/ld/mps2-an386.ld \
+                  $(PORT_DIR)/ld/sections.ld
+	$(ARM_CC) $(FW_M4_CPU) -mthumb $(FW_LDFLAGS) -T $(PORT_DIR)/ld/mps2-an386.ld \
+	    -o $@ $(filter %.o,$^) $(FW_LIBS) > /dev/null
+
+# make test: two frames of the flight on the M4, every cull giving the same frame
+check-portals-m4: $(PORTALS_FW_M4) | deps
+	@$(FW_QEMU) -M mps2-an386 $(FW_QEMU_FLAGS),arg=quick -kernel $(PORTALS_FW_M4) \
+	    > $(BUILD)/bench/portals-quick.txt 2>&1; rc=$$?; cat $(BUILD)/bench/portals-quick.txt; \
+	    test $$rc -eq 0 && test $$(grep -c '^C .* equal$$' $(BUILD)/bench/portals-quick.txt) -eq 2
+
+bench-portals: $(PORTALS_FW_M4) $(LEVEL_TOOL) $(PORTALS_BENCH_LVL) | deps
+	@LEVEL_TOOL=$(LEVEL_TOOL) LEVEL_FILE=$(PORTALS_BENCH_LVL) FW=$(PORTALS_FW_M4) \
+	    FW_QEMU="$(FW_QEMU)" FW_QEMU_FLAGS="$(FW_QEMU_FLAGS)" OUT=bench/portals.md \
+	    WORK=$(BUILD)/bench bash bench/run_portals.sh

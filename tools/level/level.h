@@ -82,6 +82,11 @@ typedef struct lv_built {
 /* pvs is taken over (freed by lv_built_free). Returns 0, or -1 with err. */
 int lv_build(const lv_level *lv, uint8_t *pvs, lv_built *out, char *err, size_t errlen);
 void lv_built_free(lv_built *b);
+/* A scripted flight (world coordinates) of `frames` eye and target points:
+ * from cell 0 to the cell farthest from it, through the portals' midpoints.
+ * Returns 0, or -1 if no height is open in every cell. */
+int lv_flight(const zs_level *lv, int frames, double (*eye)[3], double (*target)[3]);
+
 /* C source defining `const zs_level NAME` and its arrays. */
 int lv_emit_c(FILE *f, const lv_built *b, const char *name);
 

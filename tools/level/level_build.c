@@ -314,6 +314,12 @@ void lv_built_free(lv_built *b)
     memset(b, 0, sizeof *b);
 }
 
+/* Separator before item i of a list printed `per` to a line. */
+static const char *sep(int i, int per)
+{
+    return i == 0 ? "\n    " : i % per ? ", " : ",\n    ";
+}
+
 int lv_emit_c(FILE *f, const lv_built *b, const char *name)
 {
     const zs_level *lv = &b->level;
@@ -325,13 +331,13 @@ int lv_emit_c(FILE *f, const lv_built *b, const char *name)
         const zs_mesh *m = &lv->meshes[c];
         fprintf(f, "static const int16_t %s_pos%d[] = {", name, c);
         for (i = 0; i < 3 * m->vertex_count; i++)
-            fprintf(f, "%s%d", i % 12 ? ", " : "\n    ", m->positions[i]);
+            fprintf(f, "%s%d", sep(i, 12), m->positions[i]);
         fprintf(f, "};\nstatic const uint16_t %s_idx%d[] = {", name, c);
         for (i = 0; i < 3 * m->triangle_count; i++)
-            fprintf(f, "%s%u", i % 12 ? ", " : "\n    ", m->indices[i]);
+            fprintf(f, "%s%u", sep(i, 12), m->indices[i]);
         fprintf(f, "};\nstatic const zs_color %s_col%d[] = {", name, c);
         for (i = 0; i < m->triangle_count; i++)
-            fprintf(f, "%s0x%06lXu", i % 8 ? ", " : "\n    ", (unsigned long)m->face_colors[i]);
+            fprintf(f, "%s0x%06lXu", sep(i, 8), (unsigned long)m->face_colors[i]);
         fprintf(f, "};\n");
     }
     fprintf(f, "static const zs_mesh %s_meshes[%u] = {\n", name, lv->cell_count);
@@ -343,7 +349,7 @@ int lv_emit_c(FILE *f, const lv_built *b, const char *name)
                 lv->meshes[c].triangle_count);
     fprintf(f, "};\nstatic const int16_t %s_vertices[] = {", name);
     for (i = 0; i < 2 * lv->vertex_count; i++)
-        fprintf(f, "%s%d", i % 12 ? ", " : "\n    ", lv->vertices[i]);
+        fprintf(f, "%s%d", sep(i, 12), lv->vertices[i]);
     fprintf(f, "};\nstatic const zs_level_cell %s_cells[] = {\n", name);
     for (c = 0; c < lv->cell_count; c++) {
         const zs_level_cell *z = &lv->cells[c];
@@ -360,7 +366,7 @@ int lv_emit_c(FILE *f, const lv_built *b, const char *name)
         fprintf(f, "    {0, 0, 0, 0, 0, 0, 0},\n");
     fprintf(f, "};\nstatic const uint8_t %s_pvs[] = {", name);
     for (i = 0; i < lv->cell_count * rb; i++)
-        fprintf(f, "%s0x%02X", i % 12 ? ", " : "\n    ", lv->pvs[i]);
+        fprintf(f, "%s0x%02X", sep(i, 12), lv->pvs[i]);
     fprintf(f, "};\nconst zs_level %s = {\n    .cell_count = %u, .portal_count = %u, "
                ".vertex_count = %u, .unit = %ld,\n    .vertices = %s_vertices, .cells = %s_cells, "
                ".portals = %s_portals,\n    .pvs = %s_pvs, .meshes = %s_meshes};\n",

@@ -5,7 +5,8 @@
 # and PVS + portal walk, the fraction of triangles never transformed, and the
 # host precomputation (zspan-level info) of the level.
 #
-# Environment (set by mk/portals.mk): LEVEL_TOOL, LEVEL_FILE, FW, FW_QEMU,
+# Environment (set by mk/portals.mk): LEVEL_TOOL, LEVEL_FILE, FW, HOST (the host
+# build of the same program, whose checksums must match), FW_QEMU,
 # FW_QEMU_FLAGS, OUT (the Markdown file), WORK (a scratch directory).
 set -u
 set -o pipefail
@@ -22,6 +23,16 @@ if ! $FW_QEMU -M mps2-an386 $FW_QEMU_FLAGS -kernel "$FW" > "$run" 2>&1; then
     exit 1
 fi
 info=$("$LEVEL_TOOL" info "$LEVEL_FILE") || exit 1
+same_host="not compared"
+if [ -n "${HOST:-}" ]; then
+    "$HOST" > "$WORK/portals-host-full.txt" || exit 1
+    if cmp -s <(awk '/^L /{print $3, $4, $6}' "$run") \
+              <(awk '/^L /{print $3, $4, $6}' "$WORK/portals-host-full.txt"); then
+        same_host="equal on host and M4"
+    else
+        same_host="DIFFER between host and M4"
+    fi
+fi
 {
     echo "# Portal level on Cortex-M4"
     echo
@@ -56,10 +67,12 @@ info=$("$LEVEL_TOOL" info "$LEVEL_FILE") || exit 1
                 100 * tc / (ts + tc)
             printf "\nPVS + portals against every cell: %.2fx fewer instructions per frame.\n", tn / tw
         }' "$run"
+    echo
+    echo "Frame checksums: $same_host."
     grep '^M ' "$run" | sed 's/^/\n/'
 } > "$OUT"
 cat "$OUT"
-if grep -q 'DIFFER\|^E ' "$run"; then
+if grep -q 'DIFFER\|^E ' "$run" || [ "$same_host" = "DIFFER between host and M4" ]; then
     echo "bench-portals: a frame differs between culls or an error occurred" >&2
     exit 1
 fi

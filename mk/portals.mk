@@ -63,13 +63,29 @@ $(PORTALS_FW_M4): $(PORTALS_FW_OBJS) $(FW_CORE_M4_OBJS) $(PORT_DIR)/ld/mps2-an38
 	$(ARM_CC) $(FW_M4_CPU) -mthumb $(FW_LDFLAGS) -T $(PORT_DIR)/ld/mps2-an386.ld \
 	    -o $@ $(filter %.o,$^) $(FW_LIBS) > /dev/null
 
-# make test: two frames of the flight on the M4, every cull giving the same frame
-check-portals-m4: $(PORTALS_FW_M4) | deps
+# The same program on the host (bench/bench_portals_host.c stands in for the port).
+PORTALS_HOST := $(BUILD)/bench/bench_portals_host
+ALL_TARGETS += $(PORTALS_HOST)
+$(PORTALS_HOST): bench/bench_portals_fw.c bench/bench_portals_host.c $(PORTALS_BENCH_GEN) \
+                 $(PORT_HDRS) $(LIB) | deps
+	@mkdir -p $(@D)
+	$(CC) -std=c99 -Wall -Wextra -Werror -O2 -Iinclude -I$(PORT_DIR) -I$(PORTALS_BENCH_DIR) -o $@ \
+	    bench/bench_portals_fw.c bench/bench_portals_host.c $(PORTALS_BENCH_GEN) $(LIB)
+
+# make test: two frames of the flight on the M4: every cull gives the same
+# frame, and the same checksums as the host
+check-portals-m4: $(PORTALS_FW_M4) $(PORTALS_HOST) | deps
 	@$(FW_QEMU) -M mps2-an386 $(FW_QEMU_FLAGS),arg=quick -kernel $(PORTALS_FW_M4) \
 	    > $(BUILD)/bench/portals-quick.txt 2>&1; rc=$$?; cat $(BUILD)/bench/portals-quick.txt; \
+	    BENCH_ARGS=quick $(PORTALS_HOST) > $(BUILD)/bench/portals-host.txt || rc=1; \
+	    grep '^L ' $(BUILD)/bench/portals-quick.txt | awk '{print $$3, $$4, $$6}' > $(BUILD)/bench/portals-m4.sums; \
+	    grep '^L ' $(BUILD)/bench/portals-host.txt | awk '{print $$3, $$4, $$6}' > $(BUILD)/bench/portals-host.sums; \
+	    if cmp -s $(BUILD)/bench/portals-m4.sums $(BUILD)/bench/portals-host.sums; then \
+	        echo "check-portals-m4: host == M4 checksums ($$(wc -l < $(BUILD)/bench/portals-host.sums) frames)"; \
+	    else echo "check-portals-m4: host and M4 checksums differ"; rc=1; fi; \
 	    test $$rc -eq 0 && test $$(grep -c '^C .* equal$$' $(BUILD)/bench/portals-quick.txt) -eq 2
 
-bench-portals: $(PORTALS_FW_M4) $(LEVEL_TOOL) $(PORTALS_BENCH_LVL) | deps
-	@LEVEL_TOOL=$(LEVEL_TOOL) LEVEL_FILE=$(PORTALS_BENCH_LVL) FW=$(PORTALS_FW_M4) \
+bench-portals: $(PORTALS_FW_M4) $(PORTALS_HOST) $(LEVEL_TOOL) $(PORTALS_BENCH_LVL) | deps
+	@LEVEL_TOOL=$(LEVEL_TOOL) LEVEL_FILE=$(PORTALS_BENCH_LVL) FW=$(PORTALS_FW_M4) HOST=$(PORTALS_HOST) \
 	    FW_QEMU="$(FW_QEMU)" FW_QEMU_FLAGS="$(FW_QEMU_FLAGS)" OUT=bench/portals.md \
 	    WORK=$(BUILD)/bench bash bench/run_portals.sh

@@ -23,11 +23,6 @@ $(LEVEL_TOOL): tools/zspan-level.c $(LEVEL_LIB_SRCS) $(LEVEL_LIB_HDRS) $(LIB) | 
 	@mkdir -p $(@D)
 	$(CC) $(LEVEL_CFLAGS) -o $@ tools/zspan-level.c $(LEVEL_LIB_SRCS) $(LIB) -lm
 
-$(LEVEL_TEST): tests/tools/test_level.c $(LEVEL_LIB_SRCS) $(LEVEL_LIB_HDRS) $(ASAN_LIB) | deps
-	@mkdir -p $(@D)
-	$(CC) $(TEST_CFLAGS) -D_POSIX_C_SOURCE=200809L -Itools/level -DZT_TOP_DIR='"$(CURDIR)"' \
-	    -o $@ tests/tools/test_level.c $(LEVEL_LIB_SRCS) $(ASAN_LIB) $(TEST_LIBS)
-
 check-portals-full: $(LEVEL_TEST)
 	LEVEL_TEST_FULL=1 $(LEVEL_TEST)
 
@@ -89,3 +84,12 @@ bench-portals: $(PORTALS_FW_M4) $(PORTALS_HOST) $(LEVEL_TOOL) $(PORTALS_BENCH_LV
 	@LEVEL_TOOL=$(LEVEL_TOOL) LEVEL_FILE=$(PORTALS_BENCH_LVL) FW=$(PORTALS_FW_M4) HOST=$(PORTALS_HOST) \
 	    FW_QEMU="$(FW_QEMU)" FW_QEMU_FLAGS="$(FW_QEMU_FLAGS)" OUT=bench/portals.md \
 	    WORK=$(BUILD)/bench bash bench/run_portals.sh
+
+# The suite also checks the emitted C of the bench level against the level
+# built in memory from the same file (LEVEL_FILE).
+$(LEVEL_TEST): tests/tools/test_level.c $(LEVEL_LIB_SRCS) $(LEVEL_LIB_HDRS) $(PORTALS_BENCH_GEN) \
+               $(ASAN_LIB) | deps
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) -D_POSIX_C_SOURCE=200809L -Itools/level -I$(PORTALS_BENCH_DIR) \
+	    -DLEVEL_FILE='"$(PORTALS_BENCH_LVL)"' -o $@ tests/tools/test_level.c $(LEVEL_LIB_SRCS) \
+	    $(PORTALS_BENCH_GEN) $(ASAN_LIB) $(TEST_LIBS)

@@ -24,6 +24,9 @@
  *    crack or a wrongly wound face would); the statistics add up.
  *    LEVEL_TEST_FULL=1 (make check-portals-full) renders from 100 eyes per
  *    cell instead of 3.
+ *  - The emitted C (the bench level, converted at build time by zspan-level c)
+ *    equals the level built in memory from the same file, array by array.
+ *  - A walk that runs out of its budget falls back to the whole PVS.
  *  - The core refuses malformed level data (every check of zs_level_check)
  *    with ZS_ERR_LEVEL and submits nothing; zs_project_point agrees with the
  *    vertices the renderer itself projects (setup hook).
@@ -40,6 +43,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "bench_level.h"
 #include "level.h"
 
 #define N_LEVELS 22
@@ -520,6 +524,100 @@ static void test_frames_equal(void **state)
     assert_true(narrowed > 0);
 }
 
+/* ---------------- the emitted C, the walk's fallback ---------------- */
+
+static void test_emitted_c(void **state)
+{
+    lv_level lv;
+    lv_built b;
+    char err[512];
+    const zs_level *e = &bench_level;
+    int c, rb;
+    (void)state;
+    assert_int_equal(lv_load(LEVEL_FILE, &lv, err, sizeof err), 0);
+    assert_int_equal(lv_build(&lv, lv_compute_pvs(&lv, NULL), &b, err, sizeof err), 0);
+    assert_int_equal(e->cell_count, b.level.cell_count);
+    assert_int_equal(e->portal_count, b.level.portal_count);
+    assert_int_equal(e->vertex_count, b.level.vertex_count);
+    assert_int_equal(e->unit, b.level.unit);
+    rb = (e->cell_count + 7) / 8;
+    assert_memory_equal(e->vertices, b.level.vertices, sizeof(int16_t) * 2 * e->vertex_count);
+    assert_memory_equal(e->cells, b.level.cells, sizeof(zs_level_cell) * e->cell_count);
+    assert_memory_equal(e->portals, b.level.portals, sizeof(zs_level_portal) * e->portal_count);
+    assert_memory_equal(e->pvs, b.level.pvs, (size_t)rb * e->cell_count);
+    for (c = 0; c < e->cell_count; c++) {
+        const zs_mesh *x = &e->meshes[c], *y = &b.level.meshes[c];
+        assert_int_equal(x->vertex_count, y->vertex_count);
+        assert_int_equal(x->triangle_count, y->triangle_count);
+        assert_int_equal(x->scale, y->scale);
+        assert_memory_equal(x->positions, y->positions, sizeof(int16_t) * 3 * x->vertex_count);
+        assert_memory_equal(x->indices, y->indices, sizeof(uint16_t) * 3 * x->triangle_count);
+        assert_memory_equal(x->face_colors, y->face_colors, sizeof(zs_color) * x->triangle_count);
+    }
+    assert_int_equal(zs_level_check(e), ZS_OK);
+    assert_int_equal(bench_level_TRIANGLES, b.total_tris);
+    lv_built_free(&b);
+    lv_free(&lv);
+}
+
+static void test_walk_fallback(void **state)
+{
+    /* two rooms joined by 1000 copies of their portal each way: the walk
+     * tries every chain A -> B -> A (refused: A is on the path) and runs
+     * out of its budget, then draws the PVS */
+    lv_level lv;
+    lv_built b;
+    char err[512];
+    zs_level l;
+    zs_level_cell cells[2];
+    static zs_level_portal many[2000];
+    zs_renderer r;
+    zs_config cfg = zs_config_default(64, 48, 200, 200, 128);
+    void *arena = malloc(zs_arena_bytes(&cfg));
+    zs_camera cam;
+    zs_level_stats ls;
+    zs_vec3 eye = zs_vec3_make(ZS_FX(1), ZS_FX(1), -ZS_FX(1));
+    int k;
+    (void)state;
+    assert_int_equal(lv_parse(k_good, "good", &lv, err, sizeof err), 0);
+    assert_int_equal(lv_build(&lv, lv_compute_pvs(&lv, NULL), &b, err, sizeof err), 0);
+    l = b.level;
+    memcpy(cells, b.cells, sizeof cells);
+    for (k = 0; k < 2000; k++)
+        many[k] = b.portals[k < 1000 ? cells[0].first_portal : cells[1].first_portal];
+    cells[0].first_portal = 0;
+    cells[0].portal_count = 1000;
+    cells[1].first_portal = 1000;
+    cells[1].portal_count = 1000;
+    l.cells = cells;
+    l.portals = many;
+    l.portal_count = 2000;
+    assert_int_equal(zs_level_check(&l), ZS_OK);
+    assert_int_equal(zs_init(&r, arena, zs_arena_bytes(&cfg), &cfg), ZS_OK);
+    assert_int_equal(zs_camera_look_at(&cam, eye, zs_vec3_make(ZS_FX(3), ZS_FX(1), -ZS_FX(1)),
+                                       zs_vec3_make(0, ZS_FX_ONE, 0)),
+                     ZS_OK);
+    assert_int_equal(zs_camera_perspective(&cam, ZS_FX(60), ZS_FX_ONE / 20, ZS_FX(100)), ZS_OK);
+    assert_int_equal(zs_frame_begin(&r, &cam, ZS_MODE_SPAN), ZS_OK);
+    assert_int_equal(zs_level_draw(&r, &l, eye, ZS_LEVEL_CULL_PORTALS, &ls), ZS_OK);
+    assert_int_equal(ls.eye_cell, 0);
+    assert_int_equal(ls.fallback, 1);
+    assert_int_equal(ls.portals_tested, ZS_LEVEL_WALK_BUDGET);
+    assert_int_equal(ls.cells_drawn, 2);
+    assert_int_equal(ls.tris_culled, 0);
+    /* one copy of each: no fallback, the same cells */
+    cells[0].portal_count = 1;
+    cells[1].portal_count = 1;
+    assert_int_equal(zs_frame_begin(&r, &cam, ZS_MODE_SPAN), ZS_OK);
+    assert_int_equal(zs_level_draw(&r, &l, eye, ZS_LEVEL_CULL_PORTALS, &ls), ZS_OK);
+    assert_int_equal(ls.fallback, 0);
+    assert_int_equal(ls.cells_drawn, 2);
+    assert_int_equal(ls.portals_tested, 2);
+    free(arena);
+    lv_built_free(&b);
+    lv_free(&lv);
+}
+
 /* ---------------- the core's checks ---------------- */
 
 static void test_core_refuses_malformed(void **state)
@@ -751,6 +849,8 @@ int main(void)
         cmocka_unit_test(test_stabbing_lp),
         cmocka_unit_test(test_pvs_conservative),
         cmocka_unit_test(test_frames_equal),
+        cmocka_unit_test(test_emitted_c),
+        cmocka_unit_test(test_walk_fallback),
         cmocka_unit_test(test_core_refuses_malformed),
         cmocka_unit_test(test_project_point),
     };

@@ -93,3 +93,12 @@ $(LEVEL_TEST): tests/tools/test_level.c $(LEVEL_LIB_SRCS) $(LEVEL_LIB_HDRS) $(PO
 	$(CC) $(TEST_CFLAGS) -D_POSIX_C_SOURCE=200809L -Itools/level -I$(PORTALS_BENCH_DIR) \
 	    -DLEVEL_FILE='"$(PORTALS_BENCH_LVL)"' -o $@ tests/tools/test_level.c $(LEVEL_LIB_SRCS) \
 	    $(PORTALS_BENCH_GEN) $(ASAN_LIB) $(TEST_LIBS)
+
+# --- a libFuzzer harness of the core's level checks and walk (mk/fuzz.mk runs it)
+ifdef FUZZ_DIR
+FUZZ_HARNESSES += level
+$(FUZZ_DIR)/fuzz_level: tests/fuzz/fuzz_level.c tests/fuzz/fuzz_util.h $(LEVEL_LIB_SRCS) \
+                        $(LEVEL_LIB_HDRS) $(FUZZ_CORE_LIB) | deps
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -D_POSIX_C_SOURCE=200809L -Itools/level -fsanitize=fuzzer -o $@ $< \
+	    $(LEVEL_LIB_SRCS) $(FUZZ_CORE_LIB) -lm
+endif

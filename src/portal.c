@@ -5,9 +5,9 @@
 
 #include "zs_internal.h"
 
-/* A clip window in whole pixels, [x0, x1) x [y0, y1). */
+/* A clip window in whole pixels, [x0, x1) x [y0, y1), within the screen. */
 typedef struct zs_window {
-    int32_t x0, y0, x1, y1;
+    int16_t x0, y0, x1, y1;
 } zs_window;
 
 /* One cell on the walk's path: the next portal to try and the window it
@@ -251,18 +251,17 @@ static int portal_window(const zs_renderer *r, const zs_level *lv, int64_t cot,
                 hi[j] = s[j];
         }
     }
-    out->x0 = (int32_t)zs_asr64(lo[0], 16) - ZS_LEVEL_MARGIN_PX;
-    out->y0 = (int32_t)zs_asr64(lo[1], 16) - ZS_LEVEL_MARGIN_PX;
-    out->x1 = (int32_t)zs_asr64(hi[0], 16) + 1 + ZS_LEVEL_MARGIN_PX;
-    out->y1 = (int32_t)zs_asr64(hi[1], 16) + 1 + ZS_LEVEL_MARGIN_PX;
-    if (out->x0 < w->x0)
-        out->x0 = w->x0;
-    if (out->y0 < w->y0)
-        out->y0 = w->y0;
-    if (out->x1 > w->x1)
-        out->x1 = w->x1;
-    if (out->y1 > w->y1)
-        out->y1 = w->y1;
+    {
+        /* |lo|, |hi| <= 2^14 pixels (clamped), so all of this fits */
+        int32_t x0 = (int32_t)zs_asr64(lo[0], 16) - ZS_LEVEL_MARGIN_PX;
+        int32_t y0 = (int32_t)zs_asr64(lo[1], 16) - ZS_LEVEL_MARGIN_PX;
+        int32_t x1 = (int32_t)zs_asr64(hi[0], 16) + 1 + ZS_LEVEL_MARGIN_PX;
+        int32_t y1 = (int32_t)zs_asr64(hi[1], 16) + 1 + ZS_LEVEL_MARGIN_PX;
+        out->x0 = (int16_t)(x0 > w->x0 ? x0 : w->x0);
+        out->y0 = (int16_t)(y0 > w->y0 ? y0 : w->y0);
+        out->x1 = (int16_t)(x1 < w->x1 ? x1 : w->x1);
+        out->y1 = (int16_t)(y1 < w->y1 ? y1 : w->y1);
+    }
     return out->x0 < out->x1 && out->y0 < out->y1;
 }
 
@@ -282,8 +281,8 @@ static int walk(const zs_renderer *r, const zs_level *lv, uint32_t eye_cell, zs_
     stack[0].end_portal = (uint16_t)(c->first_portal + c->portal_count);
     stack[0].win.x0 = 0;
     stack[0].win.y0 = 0;
-    stack[0].win.x1 = r->cfg.width;
-    stack[0].win.y1 = r->cfg.height;
+    stack[0].win.x1 = (int16_t)r->cfg.width;
+    stack[0].win.y1 = (int16_t)r->cfg.height;
     st->cells_visited = 1;
     while (depth > 0) {
         zs_walk_entry *top = &stack[depth - 1];

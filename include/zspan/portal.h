@@ -14,8 +14,9 @@
  * that of drawing every cell).
  *
  * Freestanding like the rest of the core. The walk uses a fixed stack of at
- * most ZS_LEVEL_MAX_DEPTH entries and a bitset of ZS_LEVEL_MAX_CELLS bits,
- * both on the C stack (about 560 bytes); nothing else.
+ * most ZS_LEVEL_MAX_DEPTH entries (14 bytes each) and a bitset of
+ * ZS_LEVEL_MAX_CELLS bits, both on the C stack (about 800 bytes); nothing
+ * else.
  *
  * Coordinates: a level's plan point (x, y) at height h (level units, int16)
  * is the world point (x * unit, h * unit, -y * unit), unit in Q16.16 (the

@@ -3,7 +3,8 @@
 # bench/bench_portals_fw.c on QEMU mps2-an386 (-icount shift=0) and writes a
 # Markdown table of instructions per frame with every cell, the PVS alone,
 # and PVS + portal walk, the fraction of triangles never transformed, and the
-# host precomputation (zspan-level info) of the level.
+# host precomputation of the level's PVS (callgrind instructions of
+# lv_compute_pvs in zspan-level info).
 #
 # Environment (set by mk/portals.mk): LEVEL_TOOL, LEVEL_FILE, FW, HOST (the host
 # build of the same program, whose checksums must match), FW_QEMU,
@@ -23,6 +24,12 @@ if ! $FW_QEMU -M mps2-an386 $FW_QEMU_FLAGS -kernel "$FW" > "$run" 2>&1; then
     exit 1
 fi
 info=$("$LEVEL_TOOL" info "$LEVEL_FILE") || exit 1
+pvs_ir="(valgrind missing)"
+if command -v valgrind > /dev/null; then
+    pvs_ir=$(valgrind --tool=callgrind --toggle-collect=lv_compute_pvs \
+                 --callgrind-out-file="$WORK/portals-pvs.callgrind" "$LEVEL_TOOL" info "$LEVEL_FILE" 2>&1 |
+             sed -n 's/.*Collected : \([0-9]*\).*/\1/p')
+fi
 same_host="not compared"
 if [ -n "${HOST:-}" ]; then
     "$HOST" > "$WORK/portals-host-full.txt" || exit 1
@@ -45,6 +52,8 @@ fi
     echo '```'
     echo "$info"
     echo '```'
+    echo
+    echo "PVS precomputation (lv_compute_pvs) on the host: $pvs_ir x86-64 instructions (callgrind)."
     echo
     echo "| frame | every cell | PVS | PVS + portals | tris submitted (portals) | never transformed | cells drawn / PVS | portals tested | same frame |"
     echo "| ----- | ---------- | --- | ------------- | ------------------------ | ----------------- | ----------------- | -------------- | ---------- |"

@@ -11,6 +11,11 @@ LEVEL_LIB_SRCS := $(sort $(wildcard tools/level/*.c))
 LEVEL_LIB_HDRS := tools/level/level.h include/zspan/portal.h
 LEVEL_CFLAGS := -std=c99 -Wall -Wextra -Werror -D_POSIX_C_SOURCE=200809L -O2 -g -Iinclude -Itools/level
 LEVEL_TEST := $(BUILD)/tests/tools/test_level
+# The mesh importer (assimp through app/zs_import.c): the tool and the tests only.
+LEVEL_IMPORT_SRCS := tools/level_import/level_import.c app/zs_import.c
+LEVEL_IMPORT_HDRS := tools/level_import/level_import.h app/zs_import.h
+LEVEL_IMPORT_CFLAGS = -Itools/level_import -Iapp $(shell $(PKG_CONFIG) --cflags assimp 2>/dev/null)
+LEVEL_IMPORT_LIBS = $(shell $(PKG_CONFIG) --libs assimp 2>/dev/null || echo -lassimp)
 
 ALL_TARGETS += $(LEVEL_TOOL)
 TEST_SUITES += $(LEVEL_TEST)
@@ -19,9 +24,11 @@ SIM_EXTRA_CFLAGS += -Itools/level
 
 .PHONY: check-portals-full
 
-$(LEVEL_TOOL): tools/zspan-level.c $(LEVEL_LIB_SRCS) $(LEVEL_LIB_HDRS) $(LIB) | deps
+$(LEVEL_TOOL): tools/zspan-level.c $(LEVEL_LIB_SRCS) $(LEVEL_LIB_HDRS) $(LEVEL_IMPORT_SRCS) \
+               $(LEVEL_IMPORT_HDRS) $(LIB) | deps
 	@mkdir -p $(@D)
-	$(CC) $(LEVEL_CFLAGS) -o $@ tools/zspan-level.c $(LEVEL_LIB_SRCS) $(LIB) -lm
+	$(CC) $(LEVEL_CFLAGS) $(LEVEL_IMPORT_CFLAGS) -o $@ tools/zspan-level.c $(LEVEL_LIB_SRCS) \
+	    $(LEVEL_IMPORT_SRCS) $(LIB) $(LEVEL_IMPORT_LIBS) -lm
 
 check-portals-full: $(LEVEL_TEST)
 	LEVEL_TEST_FULL=1 $(LEVEL_TEST)
@@ -88,11 +95,12 @@ bench-portals: $(PORTALS_FW_M4) $(PORTALS_HOST) $(LEVEL_TOOL) $(PORTALS_BENCH_LV
 # The suite also checks the emitted C of the bench level against the level
 # built in memory from the same file (LEVEL_FILE).
 $(LEVEL_TEST): tests/tools/test_level.c $(LEVEL_LIB_SRCS) $(LEVEL_LIB_HDRS) $(PORTALS_BENCH_GEN) \
-               $(ASAN_LIB) | deps
+               $(LEVEL_IMPORT_SRCS) $(LEVEL_IMPORT_HDRS) $(ASAN_LIB) | deps
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) -D_POSIX_C_SOURCE=200809L -Itools/level -I$(PORTALS_BENCH_DIR) \
-	    -DLEVEL_FILE='"$(PORTALS_BENCH_LVL)"' -o $@ tests/tools/test_level.c $(LEVEL_LIB_SRCS) \
-	    $(PORTALS_BENCH_GEN) $(ASAN_LIB) $(TEST_LIBS)
+	    $(LEVEL_IMPORT_CFLAGS) -DLEVEL_FILE='"$(PORTALS_BENCH_LVL)"' -o $@ tests/tools/test_level.c \
+	    $(LEVEL_LIB_SRCS) $(LEVEL_IMPORT_SRCS) $(PORTALS_BENCH_GEN) $(ASAN_LIB) \
+	    $(LEVEL_IMPORT_LIBS) $(TEST_LIBS)
 
 # --- a libFuzzer harness of the core's level checks and walk (mk/fuzz.mk runs it)
 ifdef FUZZ_DIR

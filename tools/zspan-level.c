@@ -2,6 +2,8 @@
  * zspan-level: portal levels for the core's zs_level_draw (zspan/portal.h).
  *
  *   zspan-level gen maze|building COLSxROWS SEED [-o FILE]   random level file
+ *   zspan-level import MESH [--unit N] [-o FILE]             a level file from a mesh
+ *                                                            (groups cell_NAME, portal_A_B)
  *   zspan-level info FILE                                    check, PVS summary
  *   zspan-level c FILE -n NAME -o BASE [-p FRAMES]           BASE.c and BASE.h
  *     (-p: also NAME_path, FRAMES eye and target points of lv_flight in Q16.16)
@@ -10,6 +12,7 @@
  * names the file and line), 2 a bad command line.
  */
 #include "level.h"
+#include "level_import.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -19,6 +22,7 @@
 static void usage(FILE *f)
 {
     fprintf(f, "usage: zspan-level gen maze|building COLSxROWS SEED [-o FILE]\n"
+               "       zspan-level import MESH [--unit N] [-o FILE]\n"
                "       zspan-level info FILE\n"
                "       zspan-level c FILE -n NAME -o BASE [-p FRAMES]\n");
 }
@@ -62,6 +66,47 @@ static int cmd_gen(int argc, char **argv)
     if (argc == 6)
         out = argv[5];
     lv_generate(&lv, kind, cols, rows, (uint32_t)seed);
+    if (out && !(f = fopen(out, "w"))) {
+        perror(out);
+        lv_free(&lv);
+        return 1;
+    }
+    if (lv_write(f, &lv) != 0 || (out && fclose(f) != 0)) {
+        fprintf(stderr, "zspan-level: cannot write %s\n", out ? out : "stdout");
+        lv_free(&lv);
+        return 1;
+    }
+    lv_free(&lv);
+    return 0;
+}
+
+static int cmd_import(int argc, char **argv)
+{
+    const char *in = NULL, *out = NULL;
+    int unit = 16, i;
+    lv_level lv;
+    char err[600];
+    FILE *f = stdout;
+    for (i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--unit") && i + 1 < argc)
+            unit = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "-o") && i + 1 < argc)
+            out = argv[++i];
+        else if (!in && argv[i][0] != '-')
+            in = argv[i];
+        else {
+            usage(stderr);
+            return 2;
+        }
+    }
+    if (!in) {
+        usage(stderr);
+        return 2;
+    }
+    if (lv_import_mesh(in, unit, &lv, err, sizeof err) != 0) {
+        fprintf(stderr, "zspan-level: %s\n", err);
+        return 1;
+    }
     if (out && !(f = fopen(out, "w"))) {
         perror(out);
         lv_free(&lv);
@@ -235,6 +280,8 @@ int main(int argc, char **argv)
 {
     if (argc >= 2 && !strcmp(argv[1], "gen"))
         return cmd_gen(argc - 1, argv + 1);
+    if (argc >= 2 && !strcmp(argv[1], "import"))
+        return cmd_import(argc - 1, argv + 1);
     if (argc >= 2 && !strcmp(argv[1], "info"))
         return cmd_info(argc - 1, argv + 1);
     if (argc >= 2 && !strcmp(argv[1], "c"))

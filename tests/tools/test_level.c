@@ -24,6 +24,9 @@
  *    crack or a wrongly wound face would); the statistics add up.
  *    LEVEL_TEST_FULL=1 (make check-portals-full) renders from 100 eyes per
  *    cell instead of 3.
+ *  - Mesh import (groups cell_NAME and portal_A_B): two rooms and a door from
+ *    an OBJ give the expected cells, opening and walls; unknown cells, other
+ *    group names and a door off the rooms' outlines are refused by name.
  *  - The emitted C (the bench level, converted at build time by zspan-level c)
  *    equals the level built in memory from the same file, array by array.
  *  - A walk that runs out of its budget falls back to the whole PVS.
@@ -41,10 +44,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
+#include <unistd.h>
 
 #include "bench_level.h"
 #include "level.h"
+#include "level_import.h"
 
 #define N_LEVELS 22
 #define PI_D 3.14159265358979323846
@@ -354,7 +358,7 @@ static void test_pvs_conservative(void **state)
     int li;
     double sum_ratio = 0, worst = 0;
     long n_ratio = 0, rays = 0;
-    double pvs_ms = 0;
+    unsigned long long sequences = 0;
     (void)state;
     g_rng = 4242u;
     for (li = 0; li < N_LEVELS; li++) {
@@ -362,11 +366,9 @@ static void test_pvs_conservative(void **state)
         uint8_t *pvs, *seen, *vis_any;
         int c, e, k, missing = 0;
         lv_pvs_stats ps;
-        clock_t t0;
         make_level(li, &lv);
-        t0 = clock();
         pvs = lv_compute_pvs(&lv, &ps);
-        pvs_ms += 1000.0 * (double)(clock() - t0) / CLOCKS_PER_SEC;
+        sequences += ps.sequences;
         seen = malloc((size_t)lv.ncells);
         vis_any = malloc((size_t)lv.ncells);
         for (c = 0; c < lv.ncells; c++) {
@@ -405,8 +407,8 @@ static void test_pvs_conservative(void **state)
         lv_free(&lv);
     }
     printf("pvs: %d levels, %ld cells, %ld rays: nothing missing; PVS / sampled-visible: mean "
-           "%.3f, worst %.3f; precomputation %.1f ms cpu for all levels (sanitizer build)\n",
-           N_LEVELS, n_ratio, rays, sum_ratio / (double)n_ratio, worst, pvs_ms);
+           "%.3f, worst %.3f; %llu portal sequences tested\n",
+           N_LEVELS, n_ratio, rays, sum_ratio / (double)n_ratio, worst, sequences);
 }
 
 /* ---------------- frames ---------------- */
@@ -522,6 +524,82 @@ static void test_frames_equal(void **state)
     /* the culling is real: most triangles are never submitted */
     assert_true(culled * 2 > total);
     assert_true(narrowed > 0);
+}
+
+/* ---------------- mesh import ---------------- */
+
+/* Room A: plan [0,2.5]^2, heights 0..3; room B: [2.5,5]x[0,2.5], heights
+ * 0..2.5; a door in their shared side x = DOOR_X, plan y 1..1.5. The third
+ * group's name is GROUP. */
+static void write_rooms(const char *file, const char *door_x, const char *group)
+{
+    FILE *f = fopen(file, "w");
+    assert_non_null(f);
+    fprintf(f, "v 0 0 0\nv 2.5 0 0\nv 2.5 0 -2.5\nv 0 0 -2.5\nv 0 3 0\nv 2.5 3 -2.5\n"
+               "v 5 0 0\nv 5 0 -2.5\nv 5 2.5 0\n"
+               "g cell_A\nf 1 2 3\nf 1 3 4\nf 5 2 6\n"
+               "g cell_B\nf 2 7 8\nf 2 8 3\nf 9 2 8\n"
+               "g %s\nv %s 0 -1.0\nv %s 0 -1.5\nv %s 2.5 -1.5\nv %s 2.5 -1.0\nf 10 11 12 13\n",
+            group, door_x, door_x, door_x, door_x);
+    fclose(f);
+}
+
+static void test_import_mesh(void **state)
+{
+    char dir[] = "/tmp/zspan-level-XXXXXX", file[64], err[600];
+    lv_level lv;
+    int k, a = -1, b = -1;
+    (void)state;
+    assert_non_null(mkdtemp(dir));
+    snprintf(file, sizeof file, "%s/rooms.obj", dir);
+    write_rooms(file, "2.5", "portal_A_B");
+    k = lv_import_mesh(file, 16, &lv, err, sizeof err);
+    if (k != 0)
+        print_error("%s\n", err);
+    assert_int_equal(k, 0);
+    assert_int_equal(lv.ncells, 2);
+    assert_int_equal(lv.nportals, 1);
+    assert_int_equal(lv.unit, 16);
+    assert_int_equal(lv.cells[0].floor, 0);
+    assert_int_equal(lv.cells[0].ceiling, 48);
+    assert_int_equal(lv.cells[1].ceiling, 40);
+    /* A: its four corners and the door's two ends on its right side */
+    assert_int_equal(lv.cells[0].nv, 6);
+    assert_int_equal(lv.cells[1].nv, 6);
+    for (k = 0; k < lv.nverts; k++) {
+        if (lv.xy[k][0] == 40 && lv.xy[k][1] == 16)
+            a = k;
+        if (lv.xy[k][0] == 40 && lv.xy[k][1] == 24)
+            b = k;
+    }
+    assert_true(a >= 0 && b >= 0);
+    assert_true((lv.portals[0].va == a && lv.portals[0].vb == b) ||
+                (lv.portals[0].va == b && lv.portals[0].vb == a));
+    /* 6 + 6 sides, 2 of them the opening: the other 10 are walls, the two
+     * pieces of the shared side beside the door once each */
+    assert_int_equal(lv.nwalls, 8);
+    {
+        uint8_t *pvs = lv_compute_pvs(&lv, NULL);
+        assert_true(pvs_has(pvs, 2, 0, 1) && pvs_has(pvs, 2, 1, 0));
+        free(pvs);
+    }
+    lv_free(&lv);
+    /* refusals */
+    write_rooms(file, "2.5", "portal_A_C");
+    assert_int_equal(lv_import_mesh(file, 16, &lv, err, sizeof err), -1);
+    assert_non_null(strstr(err, "portal_A_C: a portal between unknown cells (no cell_C)"));
+    write_rooms(file, "2.5", "door");
+    assert_int_equal(lv_import_mesh(file, 16, &lv, err, sizeof err), -1);
+    assert_non_null(strstr(err, "group \"door\" is neither cell_NAME nor portal_A_B"));
+    write_rooms(file, "2.4", "portal_A_B");
+    assert_int_equal(lv_import_mesh(file, 16, &lv, err, sizeof err), -1);
+    assert_non_null(strstr(err, "is not on the outline of cell_"));
+    assert_int_equal(lv_import_mesh(file, 3, &lv, err, sizeof err), -1);
+    assert_non_null(strstr(err, "unit must be a power of two"));
+    remove(file);
+    assert_int_equal(lv_import_mesh(file, 16, &lv, err, sizeof err), -1);
+    assert_non_null(strstr(err, file));
+    rmdir(dir);
 }
 
 /* ---------------- the emitted C, the walk's fallback ---------------- */
@@ -849,6 +927,7 @@ int main(void)
         cmocka_unit_test(test_stabbing_lp),
         cmocka_unit_test(test_pvs_conservative),
         cmocka_unit_test(test_frames_equal),
+        cmocka_unit_test(test_import_mesh),
         cmocka_unit_test(test_emitted_c),
         cmocka_unit_test(test_walk_fallback),
         cmocka_unit_test(test_core_refuses_malformed),

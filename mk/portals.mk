@@ -110,3 +110,20 @@ $(FUZZ_DIR)/fuzz_level: tests/fuzz/fuzz_level.c tests/fuzz/fuzz_util.h $(LEVEL_L
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -D_POSIX_C_SOURCE=200809L -Itools/level -fsanitize=fuzzer -o $@ $< \
 	    $(LEVEL_LIB_SRCS) $(FUZZ_CORE_LIB) -lm
 endif
+
+# make test: zspan-sim walk on a generated building, the scripted flight and
+# the window (SDL's dummy video driver) driven by a key script; every frame
+# must equal the frame drawn with every cell (walk fails otherwise).
+TEST_TARGETS += check-walk
+.PHONY: check-walk
+check-walk: $(SIM) $(LEVEL_TOOL) | deps
+	@mkdir -p $(OUT)/check-walk
+	$(LEVEL_TOOL) gen building 5x4 11 -o $(OUT)/check-walk/level.lvl
+	$(SIM) walk $(OUT)/check-walk/level.lvl --frames 16 --size 120x90 --mode zline \
+	    --out $(OUT)/check-walk/path --quiet
+	SDL_VIDEODRIVER=dummy $(SIM) walk $(OUT)/check-walk/level.lvl --window --size 96x72 \
+	    --keys UUUUUUUULLLUUUUUUUURRRRRRUUUUUUUUUUUU --out $(OUT)/check-walk/window \
+	    > $(OUT)/check-walk/window.txt
+	tail -1 $(OUT)/check-walk/window.txt
+	test $$(ls $(OUT)/check-walk/window | wc -l) -eq 38
+	test $$(grep '^frame' $(OUT)/check-walk/window.txt | awk '{print $$4}' | sort -u | wc -l) -ge 2

@@ -6,7 +6,8 @@
 # host precomputation of the level's PVS (callgrind instructions of
 # lv_compute_pvs in zspan-level info).
 #
-# Environment (set by mk/portals.mk): LEVEL_TOOL, LEVEL_FILE, FW, HOST (the host
+# Environment (set by mk/portals.mk): LEVEL_TOOL, LEVEL_FILE, FW, FW_M0 (the same
+# program in Cortex-M0 code, on the same machine), HOST (the host
 # build of the same program, whose checksums must match), FW_QEMU,
 # FW_QEMU_FLAGS, OUT (the Markdown file), WORK (a scratch directory).
 set -u
@@ -23,6 +24,15 @@ if ! $FW_QEMU -M mps2-an386 $FW_QEMU_FLAGS -kernel "$FW" > "$run" 2>&1; then
     cat "$run" >&2
     exit 1
 fi
+run0="$WORK/portals-m0code.txt"
+if [ -n "${FW_M0:-}" ]; then
+    # shellcheck disable=SC2086
+    if ! $FW_QEMU -M mps2-an386 $FW_QEMU_FLAGS -kernel "$FW_M0" > "$run0" 2>&1; then
+        echo "bench-portals: the M0-code run failed:" >&2
+        cat "$run0" >&2
+        exit 1
+    fi
+fi
 info=$("$LEVEL_TOOL" info "$LEVEL_FILE") || exit 1
 pvs_ir="(valgrind missing)"
 if command -v valgrind > /dev/null; then
@@ -36,6 +46,14 @@ if [ -n "${HOST:-}" ]; then
     if cmp -s <(awk '/^L /{print $3, $4, $6}' "$run") \
               <(awk '/^L /{print $3, $4, $6}' "$WORK/portals-host-full.txt"); then
         same_host="equal on host and M4"
+        if [ -n "${FW_M0:-}" ]; then
+            if cmp -s <(awk '/^L /{print $3, $4, $6}' "$run0") \
+                      <(awk '/^L /{print $3, $4, $6}' "$WORK/portals-host-full.txt"); then
+                same_host="equal on host, M0 code and M4"
+            else
+                same_host="DIFFER between host and M0 code"
+            fi
+        fi
     else
         same_host="DIFFER between host and M4"
     fi
@@ -76,12 +94,19 @@ fi
                 100 * tc / (ts + tc)
             printf "\nPVS + portals against every cell: %.2fx fewer instructions per frame.\n", tn / tw
         }' "$run"
+    if [ -n "${FW_M0:-}" ]; then
+        echo
+        awk '/^L / { n[$3]++; s[$3] += substr($5, 7) }
+             END { printf "Cortex-M0 code (-Os) on the same machine, mean instructions per frame: every cell %d, PVS %d, PVS + portals %d (%.2fx fewer).\n",
+                   s["none"] / n["none"], s["pvs"] / n["pvs"], s["portals"] / n["portals"],
+                   (s["none"] / n["none"]) / (s["portals"] / n["portals"]) }' "$run0"
+    fi
     echo
     echo "Frame checksums: $same_host."
     grep '^M ' "$run" | sed 's/^/\n/'
 } > "$OUT"
 cat "$OUT"
-if grep -q 'DIFFER\|^E ' "$run" || [ "$same_host" = "DIFFER between host and M4" ]; then
+if grep -q 'DIFFER\|^E ' "$run" || case $same_host in DIFFER*) true;; *) false;; esac; then
     echo "bench-portals: a frame differs between culls or an error occurred" >&2
     exit 1
 fi

@@ -6,6 +6,9 @@
 #   make check-portals-full            the long run: 100 eye positions per cell, every frame
 #   zspan-sim walk LEVEL               (host_sim/walk_cmd.c) a scripted flight, PNG frames
 
+DEB_PACKAGES += gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm libassimp-dev \
+                libcmocka-dev libsdl2-dev valgrind
+
 LEVEL_TOOL := $(BUILD)/zspan-level
 LEVEL_LIB_SRCS := $(sort $(wildcard tools/level/*.c))
 LEVEL_LIB_HDRS := tools/level/level.h include/zspan/portal.h
@@ -41,7 +44,13 @@ PORTALS_FW_M4 := $(FW_BUILD)/bench-portals-mps2-an386.elf
 PORTALS_FW_OBJS := $(FW_BUILD)/m4/portals/bench_portals_fw.o $(FW_BUILD)/m4/portals/bench_level.o \
                    $(patsubst %.c,$(FW_BUILD)/m4/app/%.o,$(PORT_SRCS)) \
                    $(FW_BUILD)/m4/app/$(PORT_DIR)/board_mps2_an386.o
-ALL_TARGETS += $(PORTALS_FW_M4)
+# Cortex-M0 code of the same program on the M4 machine's RAM (the level's
+# arena does not fit the microbit): host == M0 == M4 checksums.
+PORTALS_FW_M0 := $(FW_BUILD)/bench-portals-m0code-mps2-an386.elf
+PORTALS_FW_M0_OBJS := $(FW_BUILD)/m0/portals/bench_portals_fw.o $(FW_BUILD)/m0/portals/bench_level.o \
+                      $(patsubst %.c,$(FW_BUILD)/m0/app/%.o,$(PORT_SRCS)) \
+                      $(FW_BUILD)/m0/app/board_m0code_an386.o
+ALL_TARGETS += $(PORTALS_FW_M4) $(PORTALS_FW_M0)
 BENCH_TARGETS += bench-portals
 TEST_TARGETS += check-portals-m4
 .PHONY: bench-portals check-portals-m4
@@ -60,6 +69,17 @@ $(FW_BUILD)/m4/portals/bench_portals_fw.o: bench/bench_portals_fw.c $(PORTALS_BE
 $(FW_BUILD)/m4/portals/bench_level.o: $(PORTALS_BENCH_GEN) include/zspan/portal.h | deps
 	@mkdir -p $(@D)
 	$(ARM_CC) $(FW_M4_CPU) -O2 $(FW_COMMON) -c $< -o $@
+$(FW_BUILD)/m0/portals/bench_portals_fw.o: bench/bench_portals_fw.c $(PORTALS_BENCH_GEN:.c=.h) \
+                                           $(PORT_HDRS) include/zspan/portal.h | deps
+	@mkdir -p $(@D)
+	$(ARM_CC) $(FW_M0_CPU) -Os $(FW_COMMON) -I$(PORTALS_BENCH_DIR) -c $< -o $@
+$(FW_BUILD)/m0/portals/bench_level.o: $(PORTALS_BENCH_GEN) include/zspan/portal.h | deps
+	@mkdir -p $(@D)
+	$(ARM_CC) $(FW_M0_CPU) -Os $(FW_COMMON) -c $< -o $@
+$(PORTALS_FW_M0): $(PORTALS_FW_M0_OBJS) $(FW_CORE_M0_OBJS) $(PORT_DIR)/ld/mps2-an386.ld \
+                  $(PORT_DIR)/ld/sections.ld
+	$(ARM_CC) $(FW_M0_CPU) -mthumb $(FW_LDFLAGS) -T $(PORT_DIR)/ld/mps2-an386.ld \
+	    -o $@ $(filter %.o,$^) $(FW_LIBS) > /dev/null
 $(PORTALS_FW_M4): $(PORTALS_FW_OBJS) $(FW_CORE_M4_OBJS) $(PORT_DIR)/ld/mps2-an386.ld \
                   $(PORT_DIR)/ld/sections.ld
 	$(ARM_CC) $(FW_M4_CPU) -mthumb $(FW_LDFLAGS) -T $(PORT_DIR)/ld/mps2-an386.ld \
@@ -74,21 +94,30 @@ $(PORTALS_HOST): bench/bench_portals_fw.c bench/bench_portals_host.c $(PORTALS_B
 	$(CC) -std=c99 -Wall -Wextra -Werror -O2 -Iinclude -I$(PORT_DIR) -I$(PORTALS_BENCH_DIR) -o $@ \
 	    bench/bench_portals_fw.c bench/bench_portals_host.c $(PORTALS_BENCH_GEN) $(LIB)
 
-# make test: two frames of the flight on the M4: every cull gives the same
-# frame, and the same checksums as the host
-check-portals-m4: $(PORTALS_FW_M4) $(PORTALS_HOST) | deps
-	@$(FW_QEMU) -M mps2-an386 $(FW_QEMU_FLAGS),arg=quick -kernel $(PORTALS_FW_M4) \
-	    > $(BUILD)/bench/portals-quick.txt 2>&1; rc=$$?; cat $(BUILD)/bench/portals-quick.txt; \
-	    BENCH_ARGS=quick $(PORTALS_HOST) > $(BUILD)/bench/portals-host.txt || rc=1; \
-	    grep '^L ' $(BUILD)/bench/portals-quick.txt | awk '{print $$3, $$4, $$6}' > $(BUILD)/bench/portals-m4.sums; \
-	    grep '^L ' $(BUILD)/bench/portals-host.txt | awk '{print $$3, $$4, $$6}' > $(BUILD)/bench/portals-host.sums; \
-	    if cmp -s $(BUILD)/bench/portals-m4.sums $(BUILD)/bench/portals-host.sums; then \
-	        echo "check-portals-m4: host == M4 checksums ($$(wc -l < $(BUILD)/bench/portals-host.sums) frames)"; \
-	    else echo "check-portals-m4: host and M4 checksums differ"; rc=1; fi; \
-	    test $$rc -eq 0 && test $$(grep -c '^C .* equal$$' $(BUILD)/bench/portals-quick.txt) -eq 2
+# make test: two frames of the flight on the M4 and in M0 code: every cull
+# gives the same frame, with the same checksums as the host
+PORTALS_CHECK = $(BUILD)/bench/portals-check
+check-portals-m4: $(PORTALS_FW_M4) $(PORTALS_FW_M0) $(PORTALS_HOST) | deps
+	@mkdir -p $(PORTALS_CHECK); rc=0; \
+	for cpu in m4 m0; do \
+	    elf=$(PORTALS_FW_M4); test $$cpu = m0 && elf=$(PORTALS_FW_M0); \
+	    $(FW_QEMU) -M mps2-an386 $(FW_QEMU_FLAGS),arg=quick -kernel $$elf \
+	        > $(PORTALS_CHECK)/$$cpu.txt 2>&1 || rc=1; \
+	    cat $(PORTALS_CHECK)/$$cpu.txt; \
+	    test $$(grep -c '^C .* equal$$' $(PORTALS_CHECK)/$$cpu.txt) -eq 2 || rc=1; \
+	    grep '^L ' $(PORTALS_CHECK)/$$cpu.txt | awk '{print $$3, $$4, $$6}' > $(PORTALS_CHECK)/$$cpu.sums; \
+	done; \
+	BENCH_ARGS=quick $(PORTALS_HOST) > $(PORTALS_CHECK)/host.txt || rc=1; \
+	grep '^L ' $(PORTALS_CHECK)/host.txt | awk '{print $$3, $$4, $$6}' > $(PORTALS_CHECK)/host.sums; \
+	if cmp -s $(PORTALS_CHECK)/m4.sums $(PORTALS_CHECK)/host.sums && \
+	   cmp -s $(PORTALS_CHECK)/m0.sums $(PORTALS_CHECK)/host.sums; then \
+	    echo "check-portals-m4: host == M0 == M4 checksums ($$(wc -l < $(PORTALS_CHECK)/host.sums) frames)"; \
+	else echo "check-portals-m4: host, M0 and M4 checksums differ"; rc=1; fi; \
+	exit $$rc
 
-bench-portals: $(PORTALS_FW_M4) $(PORTALS_HOST) $(LEVEL_TOOL) $(PORTALS_BENCH_LVL) | deps
+bench-portals: $(PORTALS_FW_M4) $(PORTALS_FW_M0) $(PORTALS_HOST) $(LEVEL_TOOL) $(PORTALS_BENCH_LVL) | deps
 	@LEVEL_TOOL=$(LEVEL_TOOL) LEVEL_FILE=$(PORTALS_BENCH_LVL) FW=$(PORTALS_FW_M4) HOST=$(PORTALS_HOST) \
+	    FW_M0=$(PORTALS_FW_M0) \
 	    FW_QEMU="$(FW_QEMU)" FW_QEMU_FLAGS="$(FW_QEMU_FLAGS)" OUT=bench/portals.md \
 	    WORK=$(BUILD)/bench bash bench/run_portals.sh
 

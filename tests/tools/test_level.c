@@ -413,8 +413,17 @@ static void test_pvs_conservative(void **state)
 
 /* ---------------- frames ---------------- */
 
-#define FW 120
-#define FH 90
+/* Two views: a small screen at 70 degrees, and a larger one at 110 degrees
+ * looking up and down steeply (eyes farther from the faces there, as the
+ * near plane's corners reach farther). */
+typedef struct frame_cfg {
+    int w, h, fov, eyes, eyes_full;
+    double pitch, margin;
+} frame_cfg;
+
+static const frame_cfg k_frames[2] = {{120, 90, 70, 3, 100, 1.0, 0.5},
+                                      {320, 240, 110, 1, 10, 2.6, 0.8}};
+#define FMAX (320 * 240)
 #define BACKGROUND ZS_RGB(255, 0, 255)
 
 static zs_fixed fxd(double v)
@@ -425,8 +434,8 @@ static zs_fixed fxd(double v)
 static void frame(zs_renderer *r, const zs_level *lv, const zs_camera *cam, zs_vec3 eye,
                   zs_visibility mode, zs_level_cull cull, uint8_t *img, zs_level_stats *ls)
 {
+    int y, fw = r->cfg.width, fh = r->cfg.height;
     zs_shade_params sp = zs_shade_default();
-    int y;
     sp.format = ZS_FMT_RGB888;
     sp.background = BACKGROUND;
     sp.light_count = 1;
@@ -436,17 +445,18 @@ static void frame(zs_renderer *r, const zs_level *lv, const zs_camera *cam, zs_v
     assert_int_equal(zs_frame_begin(r, cam, mode), ZS_OK);
     assert_int_equal(zs_frame_shading(r, &sp), ZS_OK);
     assert_int_equal(zs_level_draw(r, lv, eye, cull, ls), ZS_OK);
-    for (y = 0; y < FH; y++)
-        assert_int_equal(zs_render_rows(r, y, 1, img + (size_t)y * FW * 3, FW * 3), ZS_OK);
+    for (y = 0; y < fh; y++)
+        assert_int_equal(zs_render_rows(r, y, 1, img + (size_t)y * (size_t)fw * 3, (size_t)fw * 3),
+                         ZS_OK);
 }
 
-static void test_frames_equal(void **state)
+static void frames_equal(const frame_cfg *fc)
 {
-    int li, eyes = getenv("LEVEL_TEST_FULL") ? 100 : 3;
+    int li, eyes = getenv("LEVEL_TEST_FULL") ? fc->eyes_full : fc->eyes;
     long frames = 0, culled = 0, total = 0, narrowed = 0;
-    static uint8_t img[FW * FH * 3], ref[FW * FH * 3];
-    (void)state;
-    g_rng = 99u;
+    const int FW = fc->w, FH = fc->h;
+    size_t bytes = (size_t)FW * FH * 3;
+    static uint8_t img[FMAX * 3], ref[FMAX * 3];
     for (li = 0; li < N_LEVELS; li++) {
         lv_level lv;
         lv_built b;
@@ -457,25 +467,26 @@ static void test_frames_equal(void **state)
         int c, e;
         make_level(li, &lv);
         assert_int_equal(lv_build(&lv, lv_compute_pvs(&lv, NULL), &b, err, sizeof err), 0);
-        cfg = zs_config_default(FW, FH, (uint16_t)(b.total_tris * 3), (uint16_t)(b.total_tris * 4),
+        cfg = zs_config_default((uint16_t)FW, (uint16_t)FH, (uint16_t)(b.total_tris * 3), (uint16_t)(b.total_tris * 4),
                                 2048);
         arena = malloc(zs_arena_bytes(&cfg));
         assert_int_equal(zs_init(&r, arena, zs_arena_bytes(&cfg), &cfg), ZS_OK);
         for (c = 0; c < lv.ncells; c++)
             for (e = 0; e < eyes; e++) {
-                double p[2], yaw = rndf() * 2 * PI_D, pitch = (rndf() - 0.5) * 1.0, u = 0.25;
-                double h = lv.cells[c].floor + 0.5 + rndf() * (lv.cells[c].ceiling - lv.cells[c].floor - 1.0);
+                double p[2], yaw = rndf() * 2 * PI_D, pitch = (rndf() - 0.5) * fc->pitch, u = 0.25;
+                double h = lv.cells[c].floor + fc->margin +
+                           rndf() * (lv.cells[c].ceiling - lv.cells[c].floor - 2 * fc->margin);
                 zs_camera cam;
                 zs_vec3 eye, tgt;
                 zs_level_stats ls, lp, la;
                 int m, i;
-                assert_true(sample_eye(&lv, c, 0.5, p));
+                assert_true(sample_eye(&lv, c, fc->margin, p));
                 eye = zs_vec3_make(fxd(p[0] * u), fxd(h * u), fxd(-p[1] * u));
                 tgt = zs_vec3_make(fxd(p[0] * u + cos(yaw) * cos(pitch)), fxd(h * u + sin(pitch)),
                                    fxd(-p[1] * u - sin(yaw) * cos(pitch)));
                 assert_int_equal(zs_camera_look_at(&cam, eye, tgt, zs_vec3_make(0, ZS_FX_ONE, 0)),
                                  ZS_OK);
-                assert_int_equal(zs_camera_perspective(&cam, ZS_FX(70), ZS_FX_ONE / 20, ZS_FX(200)),
+                assert_int_equal(zs_camera_perspective(&cam, ZS_FX(fc->fov), ZS_FX_ONE / 20, ZS_FX(200)),
                                  ZS_OK);
                 for (m = 0; m < 2; m++) {
                     zs_visibility mode = m ? ZS_MODE_ZLINE : ZS_MODE_SPAN;
@@ -490,14 +501,14 @@ static void test_frames_equal(void **state)
                             fail();
                         }
                     frame(&r, &b.level, &cam, eye, mode, ZS_LEVEL_CULL_PORTALS, img, &ls);
-                    if (memcmp(img, ref, sizeof img)) {
+                    if (memcmp(img, ref, bytes)) {
                         print_error("level %d cell %d eye %d %s: portal culling changes the "
                                     "frame\n",
                                     li, c, e, m ? "zline" : "span");
                         fail();
                     }
                     frame(&r, &b.level, &cam, eye, mode, ZS_LEVEL_CULL_PVS, img, &lp);
-                    assert_memory_equal(img, ref, sizeof img);
+                    assert_memory_equal(img, ref, bytes);
                     /* statistics */
                     assert_int_equal(ls.eye_cell, c);
                     assert_int_equal(la.cells_drawn, lv.ncells);
@@ -518,12 +529,20 @@ static void test_frames_equal(void **state)
         lv_built_free(&b);
         lv_free(&lv);
     }
-    printf("frames: %ld pairs equal (span and zline, portals and PVS against every cell); "
-           "%.1f%% of triangles culled; the walk drew fewer cells than the PVS in %ld\n",
-           frames, 100.0 * (double)culled / (double)total, narrowed);
+    printf("frames %dx%d, fov %d: %ld pairs equal (span and zline, portals and PVS against every "
+           "cell); %.1f%% of triangles culled; the walk drew fewer cells than the PVS in %ld\n",
+           FW, FH, fc->fov, frames, 100.0 * (double)culled / (double)total, narrowed);
     /* the culling is real: most triangles are never submitted */
     assert_true(culled * 2 > total);
     assert_true(narrowed > 0);
+}
+
+static void test_frames_equal(void **state)
+{
+    (void)state;
+    g_rng = 99u;
+    frames_equal(&k_frames[0]);
+    frames_equal(&k_frames[1]);
 }
 
 /* ---------------- mesh import ---------------- */

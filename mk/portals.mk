@@ -134,6 +134,8 @@ $(LEVEL_TEST): tests/tools/test_level.c $(LEVEL_LIB_SRCS) $(LEVEL_LIB_HDRS) $(PO
 # --- a libFuzzer harness of the core's level checks and walk (mk/fuzz.mk runs it)
 ifdef FUZZ_DIR
 FUZZ_HARNESSES += level
+# fuzz.mk's rules took their prerequisites before this file added the harness
+fuzz fuzz-build test-fuzz-smoke fuzz-merge: $(FUZZ_DIR)/fuzz_level
 $(FUZZ_DIR)/fuzz_level: tests/fuzz/fuzz_level.c tests/fuzz/fuzz_util.h $(LEVEL_LIB_SRCS) \
                         $(LEVEL_LIB_HDRS) $(FUZZ_CORE_LIB) | deps
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -D_POSIX_C_SOURCE=200809L -Itools/level -fsanitize=fuzzer -o $@ $< \

@@ -34,6 +34,9 @@ const char *zs_strerror(zs_status status)
     case ZS_ERR_MODE:
         return "unknown visibility or shading mode, or one the config's flags left out";
     case ZS_ERR_ARGUMENT: return "some other argument is outside its documented range";
+    case ZS_ERR_LEVEL:
+        return "malformed level or PVS data (zspan/portal.h): a count, index, cell polygon, "
+               "portal or PVS row that zs_level_check refuses";
     case ZS_STATUS_COUNT: break;
     }
     return "unknown status code";

@@ -124,6 +124,7 @@ typedef enum zs_status {
     ZS_ERR_MODE,          /* unknown visibility or shading mode, or one the
                              config's flags left out */
     ZS_ERR_ARGUMENT,      /* any other argument out of its documented range */
+    ZS_ERR_LEVEL,         /* malformed level or PVS data (zspan/portal.h) */
     ZS_STATUS_COUNT
 } zs_status;
 

@@ -143,6 +143,15 @@ static const code_spec k_specs[] = {
       {"out", {"out of", "outside"}},
       {"documented", {"documented"}},
       {"range", {"range"}}}},
+    {ZS_ERR_LEVEL,
+     "ZS_ERR_LEVEL",
+     {{"malformed", {"malformed"}},
+      {"level", {"level"}},
+      {"PVS", {"PVS"}},
+      {"data", {"data"}},
+      {"zspan", {"zspan/portal.h"}},
+      {"portal", {"zspan/portal.h"}},
+      {"h", {"zspan/portal.h"}}}},
 };
 
 /* Words of a header comment that carry no meaning of their own. */

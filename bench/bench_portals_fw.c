@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Portal-level benchmark image (Cortex-M4 on QEMU mps2-an386): a generated
  * building floor (zspan-level gen building 8x6 7, converted to const arrays

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Host build of bench/bench_portals_fw.c: the same program on a stand-in for
  * ports/cortex-m/port.h (stdout for semihosting, no timer), so that

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The portal-level benchmark (make bench-portals): runs the M4 image of
 # bench/bench_portals_fw.c on QEMU mps2-an386 (-icount shift=0) and writes a
 # Markdown table of instructions per frame with every cell, the PVS alone,

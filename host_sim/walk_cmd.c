@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan-sim walk LEVEL: flies a scripted path through a portal level
  * (tools/level, zspan/portal.h) and writes one PNG per frame, with the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # mk/portals.mk: portal levels (zspan/portal.h, src/portal.c). Included by the
 # top-level Makefile (see docs/BUILD-CONTRACT.md and README.md (Portal levels)).
 #

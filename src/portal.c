@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Portals: check a level, find the eye's cell, walk the portals from it with
  * a shrinking screen window and submit the cells that survive
  * (include/zspan/portal.h). Draws through the public zs_draw only. */

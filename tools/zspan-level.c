@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan-level: portal levels for the core's zs_level_draw (zspan/portal.h).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan portals: draw only the cells of an indoor level that the eye can see.
  *

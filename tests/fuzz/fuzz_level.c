@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fuzz_level: portal levels (zspan/portal.h) from arbitrary bytes (libFuzzer).
  *

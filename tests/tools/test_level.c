@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Tests of portal levels: the level format (tools/level), the PVS
  * precomputation and the core's portal walk (src/portal.c).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Host side of zspan's portal levels (not part of the core): the level file
  * format (parse, check, write), random maze and building generators, the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A checked level as the core's arrays (zspan/portal.h): cell meshes (floor,
  * ceiling, walls and the steps above and below openings between cells of
  * different heights), plan polygons, directed portals, the PVS; and the C

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Level files: parse, check, write (tools/level/level.h; README.md, Portal levels). */
 #include "level.h"
 

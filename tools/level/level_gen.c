@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Random levels: a maze of equal square cells with full-width openings, or a
  * building floor of rooms of random sizes and heights joined by doors. Both
  * sit on a grid of cols x rows rectangles; a random spanning tree of the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A scripted flight through a built level: from cell 0 to the cell farthest
  * from it in portal steps, through the midpoints of the portals on the way,
  * at a height every cell's opening allows, looking ahead along the path. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Potentially visible sets (Teller and Sequin): from every cell, depth first
  * through portal sequences, keeping a sequence only while one line stabs all
  * of its portals. Exact integer arithmetic on the plan. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A level from a mesh file whose groups name cells and portals (assimp, via
  * the application layer's importer):
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A portal level from a mesh file whose groups name cells and portals
  * (tools/level_import/level_import.c; README.md, Portal levels). Host only:
  * assimp through the application layer's importer. */

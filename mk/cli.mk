@@ -59,19 +59,23 @@ $(CLI_TEST_README): tests/tools/test_readme.c $(CLI_README_C) $(ASAN_LIB) | deps
 FUZZ_CLI := $(BUILD)/fuzz/fuzz_cli
 FUZZ_CLI_SECONDS ?= 600
 FUZZ_CLI_SMOKE_RUNS ?= 3000
-FUZZ_CLI_SRCS := tests/fuzz/fuzz_cli.c $(filter-out host_sim/sim_main.c,$(wildcard host_sim/*.c)) \
-                 $(wildcard host_sim/emu/*.c) $(APP_SRCS) $(wildcard drivers/*.c) \
-                 ports/linux/linux_bus.c ports/linux/gpio.c ports/mcp2210/mcp2210.c \
-                 ports/mcp2210/mcp2210_hidapi.c
+# Deferred (=, and the link rule's prerequisites by second expansion): the
+# simulator's extra sources and flags (SIM_EXTRA_*) and the fuzzing core come
+# from mk files included after this one.
+FUZZ_CLI_SRCS = $(sort tests/fuzz/fuzz_cli.c $(filter-out host_sim/sim_main.c,$(wildcard host_sim/*.c)) \
+                $(wildcard host_sim/emu/*.c) $(APP_SRCS) $(wildcard drivers/*.c) \
+                ports/linux/linux_bus.c ports/linux/gpio.c ports/mcp2210/mcp2210.c \
+                ports/mcp2210/mcp2210_hidapi.c $(SIM_EXTRA_SRCS))
 FUZZ_CLI_PROGS := SIM MESHC LINUX MCP2210
-FUZZ_CLI_INC := -Iinclude -Iapp -Ihost_sim -Iports/linux -Iports/mcp2210 -Itests/fuzz
+FUZZ_CLI_INC = -Iinclude -Iapp -Ihost_sim -Iports/linux -Iports/mcp2210 -Itests/fuzz \
+               $(filter -I%,$(SIM_EXTRA_CFLAGS))
 FUZZ_CLI_CFLAGS = -std=c99 -Wall -Wextra -Werror -g -O1 -D_POSIX_C_SOURCE=200809L \
                   -fsanitize=address,undefined -fno-sanitize-recover=all \
                   $(FUZZ_CLI_INC) $(PORTS_GPIOD_DEFS) \
                   $(shell $(PKG_CONFIG) --cflags assimp libpng libgpiod hidapi-hidraw 2>/dev/null)
 FUZZ_CLI_LIBS = $(shell $(PKG_CONFIG) --libs assimp libpng libgpiod hidapi-hidraw 2>/dev/null) \
                 -lSDL2 -lm
-FUZZ_CLI_OBJS := $(patsubst %.c,$(BUILD)/fuzz/cli/%.o,$(FUZZ_CLI_SRCS)) \
+FUZZ_CLI_OBJS = $(patsubst %.c,$(BUILD)/fuzz/cli/%.o,$(FUZZ_CLI_SRCS)) \
                  $(foreach p,$(FUZZ_CLI_PROGS),$(BUILD)/fuzz/cli/progs_$(p).o)
 FUZZ_CLI_FLAGS := -close_fd_mask=3 -dict=tests/fuzz/cli.dict -max_len=512 -timeout=20
 
@@ -82,7 +86,8 @@ $(BUILD)/fuzz/cli/progs_%.o: tests/fuzz/fuzz_cli_progs.c | deps
 	@mkdir -p $(@D)
 	$(FUZZ_CC) $(FUZZ_CLI_CFLAGS) -Wno-unused-function -fsanitize=fuzzer-no-link -DPROG_$* \
 	    -MMD -MP -c $< -o $@
-$(FUZZ_CLI): $(FUZZ_CLI_OBJS) $(FUZZ_CORE_LIB) | deps
+.SECONDEXPANSION:
+$(FUZZ_CLI): $$(FUZZ_CLI_OBJS) $$(FUZZ_CORE_LIB) | deps
 	$(FUZZ_CC) $(FUZZ_CLI_CFLAGS) -fsanitize=fuzzer -o $@ $(FUZZ_CLI_OBJS) $(FUZZ_CORE_LIB) \
 	    $(FUZZ_CLI_LIBS)
 

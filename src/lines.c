@@ -16,7 +16,6 @@
  * D = (X, Y, -K): integers only, no division. */
 #include "zs_mono.h"
 
-#define NORMAL_VALID 1
 
 static int any_positive(const int64_t q[3])
 {
@@ -28,7 +27,8 @@ static int any_positive(const int64_t q[3])
     return m > 0 ? 1 : 0;
 }
 
-/* Unit normal (Q14, toward the eye) of record t in n[0..2], n[3] = valid. */
+/* Unit normal (Q14, toward the eye) of record t in n[0..2] (all 0 when the
+ * triangle is degenerate); n[3] is left to the caller. */
 static ZS_COLD void record_normal(const zs_renderer *r, const zs_tri *t, int64_t A, int64_t K,
                                   unsigned kshift, int16_t n[4])
 {
@@ -44,7 +44,7 @@ static ZS_COLD void record_normal(const zs_renderer *r, const zs_tri *t, int64_t
         if (q[k] < 0)
             q[k] = 0;
     }
-    n[0] = n[1] = n[2] = n[3] = 0;
+    n[0] = n[1] = n[2] = 0;
     if (!any_positive(q))
         return;
     /* q < 2^25, |X|, |Y| < 2^17: every sum below fits 63 bits */
@@ -75,14 +75,13 @@ static ZS_COLD void record_normal(const zs_renderer *r, const zs_tri *t, int64_t
             u[k] = -u[k];
     for (k = 0; k < 3; k++)
         n[k] = (int16_t)zs_asr32(u[k], 2);
-    n[3] = NORMAL_VALID;
 }
 
 void zs_lines_begin(zs_renderer *r)
 {
     int64_t A, K;
     unsigned kshift = 0;
-    uint16_t i;
+    uint16_t i, draw = 0;
     int deg = r->shade.crease_deg ? r->shade.crease_deg : 30;
     r->priv.crease_cos = zs_fx_cos_deg(ZS_FX(deg)) * 4096; /* Q16 -> Q28 */
     r->priv.line_prev_row = 0;
@@ -92,6 +91,7 @@ void zs_lines_begin(zs_renderer *r)
         int64_t f = r->cam.far_z, nz = r->cam.near_z;
         A = (f * ((int64_t)1 << 30)) / (f - nz);
     }
+    r->priv.line_depth_a = A;
     K = ((int64_t)r->cfg.height * r->priv.proj_sy) >> 13; /* 8 H cot, 1/16 px */
     if (K < 1)
         K = 1;
@@ -99,8 +99,13 @@ void zs_lines_begin(zs_renderer *r)
         K >>= 1;
         kshift++;
     }
-    for (i = 0; i < r->priv.n_tris; i++)
-        record_normal(r, &r->priv.tris[i], A, K, kshift, &r->priv.tri_normal[4u * i]);
+    for (i = 0; i < r->priv.n_tris; i++) {
+        int16_t *n = &r->priv.tri_normal[4u * i];
+        if (r->priv.draw_starts[i >> 3] & (1u << (i & 7u)))
+            draw++;
+        record_normal(r, &r->priv.tris[i], A, K, kshift, n);
+        n[3] = (int16_t)(draw & 0x7FFFu); /* draw number (wrapping) */
+    }
 }
 
 /* First record with tag >= tag: records are in submission order, and so are
@@ -130,9 +135,51 @@ static int share_vertex(const zs_tri *a, const zs_tri *b)
     return 0;
 }
 
-/* Do the visible triangles tagged a and b (a != b, both non-zero) meet
- * smoothly? Any record of each tag (a clipped triangle has several) may do. */
-static ZS_NOINLINE int smooth_pair(const zs_renderer *r, uint16_t a, uint16_t b)
+/* Window depth (Q2.30) of record t's plane at (px, py) in 1/16 px. The
+ * depth differences lose their 6 low bits so that every product fits 63
+ * bits (|dx|, |dy| < 2^16); the plane is only compared within 1/64 here. */
+static int64_t plane_depth(const zs_renderer *r, const zs_tri *t, int32_t px, int32_t py)
+{
+    const zs_vert *a = &r->priv.verts[t->v[0]], *b = &r->priv.verts[t->v[1]],
+                  *c = &r->priv.verts[t->v[2]];
+    int64_t dx1 = b->x - a->x, dy1 = b->y - a->y, dx2 = c->x - a->x, dy2 = c->y - a->y;
+    int64_t dz1 = zs_asr64((int64_t)b->z - (int64_t)a->z, 6);
+    int64_t dz2 = zs_asr64((int64_t)c->z - (int64_t)a->z, 6);
+    int64_t den = dx1 * dy2 - dx2 * dy1;
+    int64_t num = (dz1 * dy2 - dz2 * dy1) * (px - a->x) + (dz2 * dx1 - dz1 * dx2) * (py - a->y);
+    if (den == 0)
+        return a->z;
+    return (int64_t)a->z + (num / den) * 64;
+}
+
+/* Do the two planes meet at (px, py)? Their depths agree to 1/64 of
+ * A - z (proportional to 1/w: about 1.5% of the eye distance). */
+static int meet_at(const zs_renderer *r, const zs_tri *a, const zs_tri *b, int32_t px,
+                   int32_t py)
+{
+    int64_t za = plane_depth(r, a, px, py), zb = plane_depth(r, b, px, py);
+    int64_t d = za > zb ? za - zb : zb - za;
+    int64_t q = r->priv.line_depth_a - (za > zb ? za : zb);
+    return d < ((int64_t)1 << 40) && q > 0 && d * 64 < q;
+}
+
+/* Planes of neighbouring pixels' triangles meet at one of the two pixel
+ * centres (p, the pixel of a, and p + step, that of b): extrapolating a
+ * nearly edge-on plane a pixel away misleads, so the pixel it covers is
+ * where it is compared. */
+static int depth_continuous(const zs_renderer *r, const zs_tri *a, const zs_tri *b, int32_t px,
+                            int32_t py, int32_t sx, int32_t sy)
+{
+    return meet_at(r, a, b, px, py) || meet_at(r, a, b, px + sx, py + sy);
+}
+
+/* Do the visible triangles tagged a and b (a != b, both non-zero), at the
+ * pixel centres (px, py) and (px + sx, py + sy) (1/16 px), meet smoothly?
+ * Same draw, normals within the crease angle, and a shared pool vertex or
+ * planes that meet there. Any record of each tag (a clipped triangle has
+ * several) may do. */
+static ZS_NOINLINE int smooth_pair(const zs_renderer *r, uint16_t a, uint16_t b, int32_t px,
+                                   int32_t py, int32_t sx, int32_t sy)
 {
     const zs_tri *t = r->priv.tris;
     const int16_t *nrm = r->priv.tri_normal;
@@ -140,46 +187,39 @@ static ZS_NOINLINE int smooth_pair(const zs_renderer *r, uint16_t a, uint16_t b)
     for (i = first_record(r, a); i < n && t[i].color == a; i++) {
         for (j = first_record(r, b); j < n && t[j].color == b; j++) {
             const int16_t *p = &nrm[4u * i], *q = &nrm[4u * j];
-            int32_t dot;
-            if (p[3] != NORMAL_VALID || q[3] != NORMAL_VALID || !share_vertex(&t[i], &t[j]))
+            int32_t dot = p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
+            if (p[3] != q[3] || dot < r->priv.crease_cos || (dot == 0 && p[0] == 0))
                 continue;
-            dot = p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
-            if (dot >= r->priv.crease_cos)
+            if (share_vertex(&t[i], &t[j]) ||
+                depth_continuous(r, &t[i], &t[j], px, py, sx, sy))
                 return 1;
         }
     }
     return 0;
 }
 
-typedef struct pair_cache {
-    uint16_t a, b;
-    uint8_t edge;
-} pair_cache;
-
-static int is_edge(const zs_renderer *r, pair_cache *c, uint16_t a, uint16_t b)
+/* Is the boundary between the pixel tagged a centred at (px, py) (1/16
+ * px) and its neighbour at (px + sx, py + sy) tagged b an edge? */
+static int is_edge(const zs_renderer *r, uint16_t a, uint16_t b, int32_t px, int32_t py,
+                   int32_t sx, int32_t sy)
 {
     if (a == b)
         return 0;
     if (a == 0 || b == 0)
         return 1;
-    if ((c->a != a || c->b != b) && (c->a != b || c->b != a)) {
-        c->a = a;
-        c->b = b;
-        c->edge = (uint8_t)!smooth_pair(r, a, b);
-    }
-    return c->edge;
+    return !smooth_pair(r, a, b, px, py, sx, sy);
 }
 
-void zs_lines_row(zs_renderer *r, uint8_t *flags)
+void zs_lines_row(zs_renderer *r, int y, uint8_t *flags)
 {
     const uint16_t *cur = r->priv.line_ids[0], *above = r->priv.line_ids[1];
     int w = r->cfg.width, x, has_above = r->priv.line_prev_row;
-    pair_cache left = {0, 0, 0}, up = {0, 0, 0};
     uint16_t *swap;
     for (x = 0; x < w; x++) {
-        int e = x > 0 && is_edge(r, &left, cur[x - 1], cur[x]);
+        /* the neighbour's centre, in 1/16 px, and the step to this one */
+        int e = x > 0 && is_edge(r, cur[x - 1], cur[x], 16 * x - 8, 16 * y + 8, 16, 0);
         if (!e && has_above)
-            e = is_edge(r, &up, above[x], cur[x]);
+            e = is_edge(r, above[x], cur[x], 16 * x + 8, 16 * y - 8, 0, 16);
         flags[x] = (uint8_t)e;
     }
     swap = r->priv.line_ids[0];

@@ -102,6 +102,7 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
         r->priv.line_ids[0] = carve(&cur, (size_t)cfg->width * 2u);
         r->priv.line_ids[1] = carve(&cur, (size_t)cfg->width * 2u);
         r->priv.tri_normal = carve(&cur, (size_t)cfg->max_triangles * ZS_TRI_NORMAL_BYTES);
+        r->priv.draw_starts = carve(&cur, ((size_t)cfg->max_triangles + 7u) / 8u);
     }
     /* the widest guard band whose projected 28.4 coordinates fit int16 */
     dim = cfg->width > cfg->height ? cfg->width : cfg->height;
@@ -164,6 +165,8 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
     r->priv.tag_counter = 0;
     r->priv.next_row = 0;
     memset(r->priv.buckets, 0xFF, (size_t)r->cfg.height * 2u);
+    if (r->priv.draw_starts)
+        memset(r->priv.draw_starts, 0, ((size_t)r->cfg.max_triangles + 7u) / 8u);
     r->priv.state = ZS_STATE_OPEN;
     return ZS_OK;
 }
@@ -223,7 +226,7 @@ static void mono_row(zs_renderer *r, int y, uint8_t *out)
     uint8_t *grey = r->priv.mono_grey;
     if (r->shade.mono & ZS_MONO_LINES) {
         zs_raster_row(r, y, (uint8_t *)r->priv.line_ids[0]);
-        zs_lines_row(r, grey);
+        zs_lines_row(r, y, grey);
     } else {
         zs_raster_row(r, y, grey);
     }

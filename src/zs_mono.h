@@ -16,6 +16,6 @@ void zs_mono_row(zs_renderer *r, int y, uint8_t *g, uint8_t *out);
 void zs_lines_begin(zs_renderer *r);
 /* Edge flags (0/1) of the row just rendered into line_ids[0], from it and
  * the row above (when line_prev_row); then the two id lines swap. */
-void zs_lines_row(zs_renderer *r, uint8_t *flags);
+void zs_lines_row(zs_renderer *r, int y, uint8_t *flags);
 
 #endif

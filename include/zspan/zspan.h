@@ -140,8 +140,8 @@ const char *zs_strerror(zs_status status);
                                     and one line of diffusion error, 3 B per column */
 #define ZS_CFG_LINES 0x08u       /* hidden-line drawing (ZS_MONO_LINES): two lines of
                                     triangle ids and a flag line (5 B per column,
-                                    1 B shared with ZS_CFG_MONO) and a normal per
-                                    triangle record (8 B each) */
+                                    1 B shared with ZS_CFG_MONO) and a normal and
+                                    a draw-start bit per triangle record (8 B + 1 bit) */
 
 /* Sizes of the records the arena holds (checked against sizeof in src/). */
 #define ZS_VERTEX_BYTES 8u        /* screen x, y (28.4 in int16) and depth */
@@ -150,7 +150,7 @@ const char *zs_strerror(zs_status status);
 #define ZS_EDGE_BYTES 28u
 #define ZS_ACTIVE_BYTES 56u       /* per active triangle: depth plane, span state */
 #define ZS_ACTIVE_COLOR_BYTES 36u /* per active triangle: colour planes */
-#define ZS_TRI_NORMAL_BYTES 8u    /* ZS_CFG_LINES: a record's eye-space normal */
+#define ZS_TRI_NORMAL_BYTES 8u    /* ZS_CFG_LINES: a record's eye-space normal, draw */
 #define ZS_ARENA_ALIGN 8u
 
 /* Internal: n rounded up to a multiple of ZS_ARENA_ALIGN. */
@@ -164,8 +164,8 @@ const char *zs_strerror(zs_status status);
  * Per pool: vertices 8 B (+4 B shade), triangle records 12 B, row buckets
  * 2 B per row, edges 32 B, active triangles 60 B (+36 B colour planes), the
  * z-buffer line 10 B per column; with ZS_CFG_MONO 3 B per column, with
- * ZS_CFG_LINES 5 B per column (4 with ZS_CFG_MONO too) and 8 B per triangle
- * record. */
+ * ZS_CFG_LINES 5 B per column (4 with ZS_CFG_MONO too) and 8 B and 1 bit
+ * per triangle record. */
 #define ZS_ARENA_BYTES_CFG(w, h, max_tris, max_verts, max_edges, flags)            \
     (ZS_ROUND8_((size_t)(max_verts) * ZS_VERTEX_BYTES) +                            \
      (((flags) & ZS_CFG_FLAT_ONLY) ? 0u                                             \
@@ -184,7 +184,8 @@ const char *zs_strerror(zs_status status);
      (((flags) & (ZS_CFG_MONO | ZS_CFG_LINES)) ? ZS_ROUND8_((size_t)(w)) : 0u) +      \
      (((flags) & ZS_CFG_MONO) ? ZS_ROUND8_((size_t)(w) * 2u) : 0u) +                \
      (((flags) & ZS_CFG_LINES) ? 2u * ZS_ROUND8_((size_t)(w) * 2u) +                 \
-                                     ZS_ROUND8_((size_t)(max_tris) * ZS_TRI_NORMAL_BYTES) \
+                                     ZS_ROUND8_((size_t)(max_tris) * ZS_TRI_NORMAL_BYTES) + \
+                                     ZS_ROUND8_(((size_t)(max_tris) + 7u) / 8u)     \
                                : 0u) +                                              \
      ZS_ARENA_ALIGN)
 
@@ -433,7 +434,10 @@ typedef struct zs_renderer_private {
     uint8_t *mono_grey;             /* ZS_CFG_MONO: the row in GRAY8 before dithering */
     int16_t *mono_err;              /* ZS_CFG_MONO: diffusion error for the next row */
     uint16_t *line_ids[2];          /* ZS_CFG_LINES: this row's and the last row's ids */
-    int16_t *tri_normal;            /* ZS_CFG_LINES: unit normal (Q14) per record */
+    int16_t *tri_normal;            /* ZS_CFG_LINES: unit normal (Q14) and draw number
+                                       per record */
+    uint8_t *draw_starts;           /* ZS_CFG_LINES: bit per record, set where a draw's
+                                       records begin */
     int32_t guard;                  /* guard band, in units of w */
     /* frame state */
     zs_vec3 light_dir[ZS_MAX_LIGHTS]; /* unit, Q16.16 */
@@ -449,6 +453,7 @@ typedef struct zs_renderer_private {
                                          scratch line's (GRAY8, ID16) for 1-bit ones */
     uint8_t line_prev_row;            /* line_ids[1] holds the row above */
     int32_t crease_cos;               /* cos of the crease angle, Q28 */
+    int64_t line_depth_a;             /* far / (far - near), Q30: 1/w ~ A - depth */
     zs_setup_hook_fn setup_hook;
     void *setup_hook_user;
 } zs_renderer_private;

@@ -304,6 +304,11 @@ zs_status zs_render_frame(zs_renderer *r, void *buf, size_t stride, int band_row
     return ZS_OK;
 }
 
+zs_format zs_frame_format(const zs_renderer *r)
+{
+    return r ? (zs_format)r->priv.out_format : ZS_FMT_RGB565_BE;
+}
+
 const zs_stats *zs_frame_stats(const zs_renderer *r)
 {
     return r ? &r->stats : 0;

@@ -519,6 +519,10 @@ typedef int (*zs_band_fn)(void *user, int y0, int rows, const void *buf, size_t 
 zs_status zs_render_frame(zs_renderer *r, void *buf, size_t stride, int band_rows,
                           zs_band_fn fn, void *user);
 
+/* The pixel format the frame renders in (what zs_frame_shading was given;
+ * for the 1-bit formats shade.format holds the scratch line's). */
+zs_format zs_frame_format(const zs_renderer *r);
+
 /* Statistics of the current (or last) frame. */
 const zs_stats *zs_frame_stats(const zs_renderer *r);
 

@@ -19,3 +19,30 @@ $(HLINES_TEST): tests/app/test_hlines.c app/zs_hlines.c app/zs_hlines.h | deps
 	@mkdir -p $(@D) $(OUT)
 	$(CC) $(TEST_CFLAGS) -D_POSIX_C_SOURCE=200809L -Iapp -o $@ tests/app/test_hlines.c \
 	    app/zs_hlines.c $(TEST_LIBS)
+
+# The Linux I2C port through i2c-dev under umockdev (no sanitizers: see
+# mk/ports.mk). Without umockdev's files a stand-in skips with the reason.
+I2C_TEST := $(BUILD)/tests/ports/test_linux_i2c
+TEST_SUITES += $(I2C_TEST)
+I2C_TEST_SRCS := tests/ports/test_linux_i2c.c host_sim/emu/emu_mono.c host_sim/emu/emu_png.c \
+                 app/demo_scene.c
+I2C_TEST_CFLAGS = -std=gnu99 -Wall -Wextra -Werror -g -O1 -Iinclude -Iapp -Iports/linux \
+                  -Ihost_sim/emu $(shell $(PKG_CONFIG) --cflags umockdev-1.0 libpng 2>/dev/null)
+I2C_TEST_LIBS = $(shell $(PKG_CONFIG) --libs umockdev-1.0 libpng 2>/dev/null)
+
+$(I2C_TEST): $(I2C_TEST_SRCS) ports/linux/i2c_bus.c ports/linux/zs_linux_i2c.h $(PANELS_LIB) \
+             $(LIB) tests/ports/skip_suite.c | deps
+	@mkdir -p $(@D)/i2c
+	@if $(PKG_CONFIG) --exists umockdev-1.0; then \
+	    $(CC) -std=gnu99 -Wall -Wextra -Werror -g -O1 -Iinclude -Iports/linux \
+	        -c ports/linux/i2c_bus.c -o $(@D)/i2c/i2c_bus.o || exit 1; \
+	    echo "$(CC) ... -o $@ $(I2C_TEST_SRCS) i2c_bus.o"; \
+	    $(CC) $(I2C_TEST_CFLAGS) -o $@ $(I2C_TEST_SRCS) $(@D)/i2c/i2c_bus.o $(PANELS_LIB) $(LIB) \
+	        $(I2C_TEST_LIBS) $(TEST_LIBS); \
+	else \
+	    echo "test_linux_i2c: umockdev-1.0 not found by pkg-config: building a skipping stand-in"; \
+	    $(CC) -std=c99 -Wall -Wextra -Werror -o $@ tests/ports/skip_suite.c \
+	        -DSKIP_WHAT='"linux port (i2c-dev under umockdev)"' \
+	        -DSKIP_WHY='"libumockdev-dev was not installed when it was built (make deps)"' \
+	        $(TEST_LIBS); \
+	fi

@@ -27,11 +27,12 @@ TEST_SUITES += $(I2C_TEST)
 I2C_TEST_SRCS := tests/ports/test_linux_i2c.c host_sim/emu/emu_mono.c host_sim/emu/emu_png.c \
                  app/demo_scene.c
 I2C_TEST_CFLAGS = -std=gnu99 -Wall -Wextra -Werror -g -O1 -Iinclude -Iapp -Iports/linux \
+                  -DZT_TOP_DIR='"$(CURDIR)"' \
                   -Ihost_sim/emu $(shell $(PKG_CONFIG) --cflags umockdev-1.0 libpng 2>/dev/null)
 I2C_TEST_LIBS = $(shell $(PKG_CONFIG) --libs umockdev-1.0 libpng 2>/dev/null)
 
 $(I2C_TEST): $(I2C_TEST_SRCS) ports/linux/i2c_bus.c ports/linux/zs_linux_i2c.h $(PANELS_LIB) \
-             $(LIB) tests/ports/skip_suite.c | deps
+             $(LIB) tests/ports/skip_suite.c $(I2C_PROG) | deps
 	@mkdir -p $(@D)/i2c
 	@if $(PKG_CONFIG) --exists umockdev-1.0; then \
 	    $(CC) -std=gnu99 -Wall -Wextra -Werror -g -O1 -Iinclude -Iports/linux \
@@ -46,3 +47,26 @@ $(I2C_TEST): $(I2C_TEST_SRCS) ports/linux/i2c_bus.c ports/linux/zs_linux_i2c.h $
 	        -DSKIP_WHY='"libumockdev-dev was not installed when it was built (make deps)"' \
 	        $(TEST_LIBS); \
 	fi
+
+# -DZS_NO_MONO leaves the 1-bit stages out of a firmware link: the core's
+# objects built that way must not refer to them.
+TEST_TARGETS += check-no-mono
+.PHONY: check-no-mono
+check-no-mono: | deps
+	@mkdir -p $(BUILD)/m0-nomono
+	@for f in $(filter-out src/mono.c src/lines.c,$(CORE_SRCS)); do \
+	    $(ARM_CC) $(M0_CFLAGS) -Wconversion -DZS_NO_MONO -c $$f \
+	        -o $(BUILD)/m0-nomono/$$(basename $$f .c).o || exit 1; done; \
+	if $(ARM_NM) -u $(BUILD)/m0-nomono/*.o | grep -E 'zs_(mono|lines)_'; then \
+	    echo "check-no-mono: FAIL: objects built with ZS_NO_MONO call the 1-bit stages"; exit 1; fi; \
+	echo "check-no-mono: without the 1-bit stages .text is" \
+	    $$($(ARM_SIZE) -t $(BUILD)/m0-nomono/*.o | tail -1 | cut -f1 | tr -d ' ') "bytes (Cortex-M0)"
+
+# zspan-i2c: the demo on an SSD1306/SH1106 over /dev/i2c-N (Raspberry Pi).
+I2C_PROG := $(BUILD)/zspan-i2c
+ALL_TARGETS += $(I2C_PROG)
+$(I2C_PROG): ports/linux/zspan-i2c.c ports/linux/i2c_bus.c ports/linux/zs_linux_i2c.h \
+             app/demo_scene.c app/demo_scene.h $(PANELS_LIB) $(LIB) | deps
+	@mkdir -p $(@D)
+	$(CC) -std=gnu99 -Wall -Wextra -Werror -O2 -g -Iinclude -Iapp -Iports/linux -o $@ \
+	    ports/linux/zspan-i2c.c ports/linux/i2c_bus.c app/demo_scene.c $(PANELS_LIB) $(LIB)

@@ -37,6 +37,15 @@ size_t zs_arena_bytes(const zs_config *cfg)
                               cfg->max_active_edges, cfg->flags);
 }
 
+/* Built with -DZS_NO_MONO the 1-bit stages (mono.c, lines.c) are never
+ * called, so a firmware link leaves them out (about 2.6 KB on Cortex-M0);
+ * the 1-bit formats are then unknown (ZS_ERR_FORMAT). */
+#ifdef ZS_NO_MONO
+#define MONO_BUILT(f) ((void)(f), 0)
+#else
+#define MONO_BUILT(f) zs_format_is_mono(f)
+#endif
+
 /* Takes n bytes (rounded up to 8) from the cursor. */
 static void *carve(uint8_t **cursor, size_t n)
 {
@@ -183,7 +192,7 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
         return ZS_ERR_MODE;
     if ((r->cfg.flags & ZS_CFG_FLAT_ONLY) && (p->shading != ZS_SHADE_FLAT || p->fog.enabled))
         return ZS_ERR_MODE;
-    if ((unsigned)p->format >= (unsigned)ZS_FMT_COUNT && !zs_format_is_mono(p->format))
+    if ((unsigned)p->format >= (unsigned)ZS_FMT_COUNT && !MONO_BUILT(p->format))
         return ZS_ERR_FORMAT;
     if (zs_format_is_mono(p->format)) {
         if (p->mono & ~(unsigned)(ZS_MONO_DIFFUSE | ZS_MONO_LINES | ZS_MONO_INVERT) ||
@@ -223,6 +232,11 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
 /* One row of a 1-bit frame: the scratch line, then dithered and packed. */
 static void mono_row(zs_renderer *r, int y, uint8_t *out)
 {
+#ifdef ZS_NO_MONO
+    (void)r;
+    (void)y;
+    (void)out;
+#else
     uint8_t *grey = r->priv.mono_grey;
     if (r->shade.mono & ZS_MONO_LINES) {
         zs_raster_row(r, y, (uint8_t *)r->priv.line_ids[0]);
@@ -231,6 +245,7 @@ static void mono_row(zs_renderer *r, int y, uint8_t *out)
         zs_raster_row(r, y, grey);
     }
     zs_mono_row(r, y, grey, out);
+#endif
 }
 
 zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t stride)
@@ -254,11 +269,13 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
         return ZS_ERR_BUFFER; /* too small, or rows * stride past the address space */
     if (r->priv.state == ZS_STATE_OPEN) {
         zs_raster_begin(r);
+#ifndef ZS_NO_MONO
         if (mono) {
             zs_mono_begin(r);
             if (r->shade.mono & ZS_MONO_LINES)
                 zs_lines_begin(r);
         }
+#endif
         r->priv.state = ZS_STATE_RENDERING;
     }
     for (y = r->priv.next_row; y < y0; y++) {

@@ -275,6 +275,37 @@ static void test_permission(void **state)
     assert_non_null(strstr(msg, "i2c group"));
 }
 
+/* The program itself (build/zspan-i2c) on the emulated bus: the same
+ * i2c-dev node, from another process. */
+static void test_program(void **state)
+{
+    (void)state;
+    need_umockdev();
+    hw_reset(&H_);
+    char cmd[512];
+    snprintf(cmd, sizeof cmd, "%s/build/zspan-i2c --bus /dev/i2c-1 --frames 3 --lines", ZT_TOP_DIR);
+    FILE *f = popen(cmd, "r");
+    char line[512] = {0};
+    assert_non_null(f);
+    while (fgets(line, sizeof line, f) != NULL)
+        print_message("    %s", line);
+    int rc = pclose(f);
+    assert_true(WIFEXITED(rc) && WEXITSTATUS(rc) == 0);
+    assert_non_null(strstr(line, "3 frames"));
+    assert_int_equal(H_.emu.errors, 0);
+    assert_true(H_.emu.display_on);
+    assert_true(H_.emu.data_bytes >= 3 * 1024);
+    /* no device: exit status 3 and the reason */
+    snprintf(cmd, sizeof cmd, "%s/build/zspan-i2c --bus /dev/i2c-1 --addr 0x3D 2>&1", ZT_TOP_DIR);
+    f = popen(cmd, "r");
+    assert_non_null(f);
+    line[0] = 0;
+    if (fgets(line, sizeof line, f) == NULL) line[0] = 0;
+    rc = pclose(f);
+    assert_true(WIFEXITED(rc) && WEXITSTATUS(rc) == 3);
+    assert_non_null(strstr(line, "NACK"));
+}
+
 int main(int argc, char **argv)
 {
     const struct CMUnitTest tests[] = {
@@ -282,6 +313,7 @@ int main(int argc, char **argv)
         cmocka_unit_test(test_missing_bus),
         cmocka_unit_test(test_nack),
         cmocka_unit_test(test_permission),
+        cmocka_unit_test(test_program),
     };
     (void)argc;
     if (getenv("ZS_UMOCKDEV_CHILD") == NULL) {

@@ -1,3 +1,4 @@
+/* LIBS: -lassimp */
 /*
  * test_lines: hidden-line drawing (ZS_MONO_LINES) against an oracle that
  * knows nothing of the core's method.
@@ -24,9 +25,16 @@
  *    of the first check; counted separately);
  *  - span == zline, page == MSB layouts, and any band height give the same
  *    drawing.
+ * The same on models of Debian's assimp-testmodels (each turned three ways,
+ * with a box beside it), where the files are installed; there the drawn
+ * pixels may include up to 2% of false-crease pixels (sub-pixel triangles)
+ * and each view must show 98% of the visible length.
  */
 #include "zt_test.h"
 
+#include <assimp/cimport.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -43,11 +51,26 @@
 #define PI 3.14159265358979323846
 
 typedef struct mesh_b {
-    int16_t pos[3 * 600];
-    uint16_t idx[3 * 1200];
+    int16_t *pos;   /* 3 per vertex (mesh_alloc) */
+    uint16_t *idx;  /* 3 per triangle */
     int nv, nt;
     zs_fixed scale;
 } mesh_b;
+
+static void mesh_alloc(mesh_b *m, size_t nv, size_t nt)
+{
+    m->pos = calloc(3 * nv, sizeof *m->pos);
+    m->idx = calloc(3 * nt, sizeof *m->idx);
+    m->nv = m->nt = 0;
+}
+
+static void mesh_release(mesh_b *m)
+{
+    free(m->pos);
+    free(m->idx);
+    m->pos = NULL;
+    m->idx = NULL;
+}
 
 static int add_v(mesh_b *m, double x, double y, double z)
 {
@@ -317,6 +340,7 @@ static void random_scene(zt_rng *g, scene *s)
     for (int d = 0; d < s->nmesh; d++) {
         int kind = (int)zt_below(g, 4);
         mesh_b *m = &s->meshes[d];
+        mesh_alloc(m, 600, 1200);
         double r;
         if (kind == 0) {
             make_box(m, zt_uniform(g, 0.3, 1), zt_uniform(g, 0.3, 1), zt_uniform(g, 0.3, 1));
@@ -351,6 +375,110 @@ static void random_scene(zt_rng *g, scene *s)
         zs_mat34 rr = zs_mat34_mul(&ry, &rx);
         s->model[d] = zs_mat34_mul(&tr, &rr);
     }
+}
+
+/* (Not the spider: its legs cut into its body, and the lines where surfaces
+ * intersect are drawn but are no feature edges of the oracle.) */
+static const char *k_models[] = {
+    "/usr/share/assimp/models/STL/sphereWithHole.stl",
+    "/usr/share/assimp/models/PLY/Wuson.ply",
+    "/usr/share/assimp/models/OBJ/box.obj",
+};
+#define NMODELS ((int)(sizeof k_models / sizeof k_models[0]))
+#define MODEL_VIEWS 3
+
+static const int16_t *g_weld_pos;
+static int weld_cmp(const void *a, const void *b)
+{
+    int i = *(const int *)a, j = *(const int *)b;
+    int c = memcmp(&g_weld_pos[3 * i], &g_weld_pos[3 * j], 3 * sizeof(int16_t));
+    return c ? c : (i > j) - (i < j);
+}
+
+/* Vertices at the same (quantised) position made one (files such as STL
+ * repeat them per face), so the oracle's edges join the faces that meet. */
+static void weld(mesh_b *m)
+{
+    int *ord = malloc((size_t)m->nv * sizeof *ord), *map = malloc((size_t)m->nv * sizeof *map);
+    for (int i = 0; i < m->nv; i++) ord[i] = i;
+    g_weld_pos = m->pos;
+    qsort(ord, (size_t)m->nv, sizeof *ord, weld_cmp);
+    for (int k = 0; k < m->nv; k++) {
+        int i = ord[k];
+        map[i] = (k > 0 && memcmp(&m->pos[3 * ord[k - 1]], &m->pos[3 * i], 6) == 0) ? map[ord[k - 1]] : i;
+    }
+    for (int t = 0; t < 3 * m->nt; t++) m->idx[t] = (uint16_t)map[m->idx[t]];
+    free(ord);
+    free(map);
+}
+
+/* A model file as one mesh, fitted into the unit sphere; 0 if absent. */
+static int load_model(const char *path, mesh_b *m)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return 0;
+    fclose(f);
+    const struct aiScene *sc = aiImportFile(path, aiProcess_Triangulate |
+                                                      aiProcess_JoinIdenticalVertices |
+                                                      aiProcess_PreTransformVertices);
+    if (!sc) return 0;
+    size_t nv = 0, nt = 0;
+    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300}, rad = 0;
+    for (unsigned i = 0; i < sc->mNumMeshes; i++) {
+        nv += sc->mMeshes[i]->mNumVertices;
+        nt += sc->mMeshes[i]->mNumFaces;
+        for (unsigned v = 0; v < sc->mMeshes[i]->mNumVertices; v++) {
+            const struct aiVector3D *p = &sc->mMeshes[i]->mVertices[v];
+            double q[3] = {p->x, p->y, p->z};
+            for (int k = 0; k < 3; k++) {
+                if (q[k] < lo[k]) lo[k] = q[k];
+                if (q[k] > hi[k]) hi[k] = q[k];
+            }
+        }
+    }
+    if (nv == 0 || nv > 60000 || nt > 60000) {
+        aiReleaseImport(sc);
+        return 0;
+    }
+    double c[3] = {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
+    for (unsigned i = 0; i < sc->mNumMeshes; i++)
+        for (unsigned v = 0; v < sc->mMeshes[i]->mNumVertices; v++) {
+            const struct aiVector3D *p = &sc->mMeshes[i]->mVertices[v];
+            double d = sqrt((p->x - c[0]) * (p->x - c[0]) + (p->y - c[1]) * (p->y - c[1]) +
+                            (p->z - c[2]) * (p->z - c[2]));
+            if (d > rad) rad = d;
+        }
+    mesh_alloc(m, nv, nt);
+    m->scale = ZS_FX(1) / 8192;
+    for (unsigned i = 0; i < sc->mNumMeshes; i++) {
+        const struct aiMesh *am = sc->mMeshes[i];
+        int base = m->nv;
+        for (unsigned v = 0; v < am->mNumVertices; v++)
+            add_v(m, (am->mVertices[v].x - c[0]) / rad * 1.5, (am->mVertices[v].y - c[1]) / rad * 1.5,
+                  (am->mVertices[v].z - c[2]) / rad * 1.5);
+        for (unsigned k = 0; k < am->mNumFaces; k++)
+            if (am->mFaces[k].mNumIndices == 3)
+                add_t(m, base + (int)am->mFaces[k].mIndices[0], base + (int)am->mFaces[k].mIndices[1],
+                      base + (int)am->mFaces[k].mIndices[2]);
+    }
+    aiReleaseImport(sc);
+    weld(m);
+    return 1;
+}
+
+/* The model (already in meshes[0]) turned, in front of the camera, and a
+ * box beside it. */
+static void model_scene(zt_rng *g, scene *s)
+{
+    s->nmesh = 2;
+    zs_mat34 rx = zs_mat34_rotate_x((zs_fixed)zt_range(g, 0, ZS_FX(360)));
+    zs_mat34 ry = zs_mat34_rotate_y((zs_fixed)zt_range(g, 0, ZS_FX(360)));
+    zs_mat34 tr = zs_mat34_translate(0, 0, -ZS_FX(4));
+    zs_mat34 rr = zs_mat34_mul(&ry, &rx);
+    s->model[0] = zs_mat34_mul(&tr, &rr);
+    mesh_alloc(&s->meshes[1], 600, 1200);
+    make_box(&s->meshes[1], 0.4, 0.4, 0.4);
+    s->model[1] = zs_mat34_translate(ZS_FX(3), ZS_FX(1), -ZS_FX(5));
 }
 
 typedef struct ctx {
@@ -402,7 +530,7 @@ static void test_lines_vs_oracle(void **state)
     zt_rng g;
     zt_rng_seed(&g, SEED);
     ctx c;
-    zs_config cfg = zs_config_default(W, H, 6000, 3000, 1200);
+    zs_config cfg = zs_config_default(W, H, 30000, 30000, 4096);
     cfg.flags = ZS_CFG_LINES;
     size_t an = zs_arena_bytes(&cfg);
     c.arena = malloc(an);
@@ -412,9 +540,22 @@ static void test_lines_vs_oracle(void **state)
     double *dist = malloc(W * H * sizeof *dist), worst_dist = 0;
     double worst_recall = 1;
     long total_drawn = 0, total_vis = 0, total_hidden_only = 0, total_found = 0;
-    for (int k = 0; k < NSCENES; k++) {
+    long model_stray = 0, model_drawn = 0;
+    int models_loaded = 0;
+    for (int k = 0; k < NSCENES + NMODELS * MODEL_VIEWS; k++) {
         scene s;
-        random_scene(&g, &s);
+        if (k < NSCENES) {
+            random_scene(&g, &s);
+        } else {
+            if (!load_model(k_models[(k - NSCENES) / MODEL_VIEWS], &s.meshes[0])) {
+                if ((k - NSCENES) % MODEL_VIEWS == 0)
+                    print_message("lines: %s not found, skipped\n",
+                                  k_models[(k - NSCENES) / MODEL_VIEWS]);
+                continue;
+            }
+            models_loaded++;
+            model_scene(&g, &s);
+        }
         build_world(&s);
         samples sm = {0};
         feature_samples(&s, &sm);
@@ -466,9 +607,10 @@ static void test_lines_vs_oracle(void **state)
             }
         }
         long drawn = 0, stray = 0;
+        double dist_scene = 0;
         for (int i = 0; i < W * H; i++) {
             drawn += on[i];
-            if (on[i] && dist[i] > worst_dist) worst_dist = dist[i];
+            if (on[i] && dist[i] > dist_scene) dist_scene = dist[i];
             if (on[i] && !near_vis[i]) {
                 stray++;
                 if (stray <= 3)
@@ -502,8 +644,24 @@ static void test_lines_vs_oracle(void **state)
         total_hidden_only += stray;
         ZT_CHECK(drawn > 50 && vis > 100, "scene %d: a real drawing (%ld px, %ld samples)", k,
                  drawn, vis);
-        ZT_CHECK(stray == 0, "scene %d: %ld of %ld drawn pixels are not near a visible edge", k,
-                 stray, drawn);
+        if (k >= NSCENES)
+            print_message("lines: model %s view %d: %ld drawn pixels, %ld not near a visible "
+                          "edge, %.2f%% of the visible length drawn\n",
+                          k_models[(k - NSCENES) / MODEL_VIEWS], (k - NSCENES) % MODEL_VIEWS,
+                          drawn, stray, vis ? 100.0 * (double)found / (double)vis : 0.0);
+        /* Models: dense meshes have triangles of a pixel or less, whose normals
+         * (from 1/16 px screen vertices) can be far off, so a few pixels of a
+         * false crease may be drawn; at most 2% of the drawing. */
+        ZT_CHECK(k >= NSCENES ? stray * 50 <= drawn : stray == 0,
+                 "scene %d: %ld of %ld drawn pixels are not near a visible edge", k, stray, drawn);
+        if (k >= NSCENES) {
+            model_stray += stray;
+            model_drawn += drawn;
+            ZT_CHECK(recall >= 0.98, "model view %d: %.2f%% of the visible length drawn", k,
+                     100 * recall);
+        } else if (dist_scene > worst_dist) {
+            worst_dist = dist_scene;
+        }
         /* sub-pixel slivers (a sheet seen edge-on) cover no pixel centre and
          * cannot be drawn: a scene may lose a little more than the 2% the
          * whole set may lose */
@@ -512,14 +670,18 @@ static void test_lines_vs_oracle(void **state)
         total_found += found;
         free(sm.v);
         free(s.t);
+        for (int d = 0; d < s.nmesh; d++) mesh_release(&s.meshes[d]);
     }
     double all = total_vis ? (double)total_found / total_vis : 0;
-    print_message("lines: %d scenes, %ld drawn pixels, %ld visible edge samples; %.2f%% of the "
-                  "visible length drawn (worst scene %.2f%%); drawn pixels at most %.3f px from "
-                  "a visible edge; stray pixels %ld\n",
+    print_message("lines: %d random scenes and the model views: %ld drawn pixels, %ld visible "
+                  "edge samples; %.2f%% of the visible length drawn (worst scene %.2f%%); on the "
+                  "random scenes every drawn pixel at most %.3f px from a visible edge; on the "
+                  "models %ld of %ld drawn pixels farther than %.2f px\n",
                   NSCENES, total_drawn, total_vis, 100 * all, 100 * worst_recall, worst_dist,
-                  total_hidden_only);
+                  model_stray, model_drawn, TOL);
     ZT_CHECK(all >= 0.98, "%.2f%% of the visible edge length drawn", 100 * all);
+    print_message("lines: %d model views (%d models of %d found)\n", models_loaded,
+                  models_loaded / MODEL_VIEWS, NMODELS);
     free(img); free(ref); free(on); free(near_vis); free(dist);
     free(c.arena);
 }

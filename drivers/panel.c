@@ -13,7 +13,7 @@ const char *zs_panel_strerror(zs_panel_status s)
     case ZS_PANEL_ERR_NULL: return "NULL panel, description, bus, renderer or buffer";
     case ZS_PANEL_ERR_IO: return "the bus reported a failure";
     case ZS_PANEL_ERR_FORMAT: return "pixel format not supported by this panel";
-    case ZS_PANEL_ERR_ROTATION: return "rotation not 0..3";
+    case ZS_PANEL_ERR_ROTATION: return "rotation not 0..3, or one the controller cannot do";
     case ZS_PANEL_ERR_WINDOW: return "empty window or outside the visible area";
     case ZS_PANEL_ERR_STATE:
         return "panel not initialised, or pixels without an open window or past its end";
@@ -77,9 +77,23 @@ zs_panel_status zs__panel_run_records(zs_panel *p, const uint8_t *rec, size_t le
     return ZS_PANEL_OK;
 }
 
+int zs_panel_supports(const zs_panel_desc *desc, zs_format format)
+{
+    return desc != NULL && (unsigned)format < 16u && (desc->formats & (1u << (unsigned)format));
+}
+
+size_t zs_panel_window_bytes(zs_format format, unsigned w, unsigned h)
+{
+    if (format == ZS_FMT_MONO_PAGE)
+        return (size_t)w * ((h + 7u) / 8u);
+    if (format == ZS_FMT_MONO_MSB)
+        return (size_t)((w + 7u) / 8u) * h;
+    return (size_t)w * h * (format == ZS_FMT_RGB666 ? 3u : 2u);
+}
+
 unsigned zs_panel_bytes_per_pixel(const zs_panel_desc *desc, zs_format format)
 {
-    if (desc == NULL || (unsigned)format >= 8u || !(desc->formats & (1u << (unsigned)format)))
+    if (!zs_panel_supports(desc, format))
         return 0;
     if (format == ZS_FMT_RGB565_BE)
         return 2;
@@ -109,7 +123,7 @@ zs_panel_status zs_panel_geometry(const zs_panel_desc *desc, unsigned rotation, 
 
     if (desc == NULL)
         return ZS_PANEL_ERR_NULL;
-    if (rotation > 3u)
+    if (rotation > 3u || (desc->rotations != 0 && !(desc->rotations & (1u << rotation))))
         return ZS_PANEL_ERR_ROTATION;
     if (desc->width == 0 || desc->height == 0 ||
         (uint32_t)desc->col_offset + desc->width > desc->ram_width ||
@@ -161,7 +175,7 @@ static int ops_complete(const zs_panel_ops *o)
  * command set has the register values for. */
 static zs_panel_status format_ok(const zs_panel_desc *desc, zs_format format)
 {
-    if (zs_panel_bytes_per_pixel(desc, format) == 0)
+    if (!zs_panel_supports(desc, format))
         return ZS_PANEL_ERR_FORMAT;
     return desc->ops->check != NULL ? desc->ops->check(desc, format) : ZS_PANEL_OK;
 }
@@ -178,6 +192,10 @@ zs_panel_status zs_panel_init(zs_panel *p, const zs_panel_desc *desc, zs_bus *bu
     p->bus = bus;
     p->inverted = 0;
     p->use_ramwrc = 0;
+    p->partial = 0;
+    p->write_base = 0;
+    p->mono_page = 0;
+    p->mono_col = p->mono_cols = 0;
     p->scratch_next = 0;
     p->window_bytes = 0;
     p->window_total = 0;
@@ -261,6 +279,11 @@ zs_panel_status zs_panel_window(zs_panel *p, uint16_t x0, uint16_t y0, uint16_t 
         return s;
     if (x0 >= x1 || y0 >= y1 || x1 > p->width || y1 > p->height)
         return ZS_PANEL_ERR_WINDOW;
+    /* 1-bit RAM is addressed in bytes: pages of 8 rows, or 8 columns */
+    if (p->format == ZS_FMT_MONO_PAGE && (y0 % 8u || (y1 % 8u && y1 != p->height)))
+        return ZS_PANEL_ERR_WINDOW;
+    if (p->format == ZS_FMT_MONO_MSB && (x0 % 8u || (x1 % 8u && x1 != p->width)))
+        return ZS_PANEL_ERR_WINDOW;
     xs = (uint16_t)(x0 + p->x_offset);
     xe = (uint16_t)(x1 - 1u + p->x_offset);
     ys = (uint16_t)(y0 + p->y_offset);
@@ -268,8 +291,8 @@ zs_panel_status zs_panel_window(zs_panel *p, uint16_t x0, uint16_t y0, uint16_t 
     p->window_bytes = 0;
     if ((s = p->desc->ops->window(p, xs, ys, xe, ye)) != ZS_PANEL_OK)
         return s;
-    p->window_total = (uint32_t)(x1 - x0) * (uint32_t)(y1 - y0) *
-                      zs_panel_bytes_per_pixel(p->desc, p->format);
+    p->window_total = (uint32_t)zs_panel_window_bytes(p->format, (unsigned)(x1 - x0),
+                                                      (unsigned)(y1 - y0));
     p->window_bytes = p->window_total;
     return ZS_PANEL_OK;
 }

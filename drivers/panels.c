@@ -260,10 +260,95 @@ const zs_panel_desc zs_panel_ssd1351 = {
     INIT(ssd1351_init),
 };
 
+/* SSD1306 / SH1106 modules: contrast, pre-charge and VCOMH (the driver
+ * sends the rest). */
+static const uint8_t oled_init[] = {
+    ZS_SSD1306_CONTRAST, 0, 0xCF, 0,    /* contrast, then its value */
+    ZS_SSD1306_PRECHARGE, 0, 0xF1, 0,   /* pre-charge: phase 1 1, phase 2 15 clocks */
+    ZS_SSD1306_VCOMH, 0, 0x40, 0,       /* VCOMH deselect level */
+};
+
+#define MONO_PAGE_ONLY ((uint16_t)(1u << ZS_FMT_MONO_PAGE))
+#define ROT_0_2 ((uint8_t)0x05u)
+
+/* 0.96" 128x64 modules mount the glass with SEG0 on the right and COM0 at
+ * the bottom: upright needs remap and reversed scan (MX|MY) at rotation 0;
+ * the 64 COM lines are wired alternately (COM pins 0x12). */
+const zs_panel_desc zs_panel_ssd1306_128x64 = {
+    .name = "ssd1306-128x64",
+    .ops = &zs_panel_ops_ssd1306,
+    .madctl = (uint8_t)(ZS_MADCTL_MX | ZS_MADCTL_MY),
+    .formats = MONO_PAGE_ONLY,
+    .width = 128,
+    .height = 64,
+    .ram_width = 128,
+    .ram_height = 64,
+    .max_spi_hz = 10000000u,
+    .rotations = ROT_0_2,
+    .mux = 0x12,
+    INIT(oled_init),
+};
+
+/* 0.91" 128x32: 32 multiplexed rows wired in sequence (COM pins 0x02). */
+const zs_panel_desc zs_panel_ssd1306_128x32 = {
+    .name = "ssd1306-128x32",
+    .ops = &zs_panel_ops_ssd1306,
+    .madctl = (uint8_t)(ZS_MADCTL_MX | ZS_MADCTL_MY),
+    .formats = MONO_PAGE_ONLY,
+    .width = 128,
+    .height = 32,
+    .ram_width = 128,
+    .ram_height = 32,
+    .max_spi_hz = 10000000u,
+    .rotations = ROT_0_2,
+    .mux = 0x02,
+    INIT(oled_init),
+};
+
+/* 1.3" 128x64 on an SH1106: 132 RAM columns, the glass on SEG2..SEG129. */
+const zs_panel_desc zs_panel_sh1106_132x64 = {
+    .name = "sh1106-132x64",
+    .ops = &zs_panel_ops_sh1106,
+    .madctl = (uint8_t)(ZS_MADCTL_MX | ZS_MADCTL_MY),
+    .formats = MONO_PAGE_ONLY,
+    .width = 128,
+    .height = 64,
+    .ram_width = 132,
+    .ram_height = 64,
+    .col_offset = 2,
+    .max_spi_hz = 4000000u,
+    .rotations = ROT_0_2,
+    .mux = 0x12,
+    INIT(oled_init),
+};
+
+/* SSD1680 2.13" e-paper, 122 x 250 (portrait): sources S8.. (0x21's second
+ * byte 0x80), border follows LUT1, internal temperature sensor. */
+static const uint8_t ssd1680_init[] = {
+    ZS_SSD1680_BORDER, 1, 0x05,
+    ZS_SSD1680_UPDATE_CTRL1, 2, 0x00, 0x80,
+    ZS_SSD1680_TEMP_SENSOR, 1, 0x80,
+};
+
+const zs_panel_desc zs_panel_ssd1680_122x250 = {
+    .name = "ssd1680-122x250",
+    .ops = &zs_panel_ops_ssd1680,
+    .formats = (uint16_t)(1u << ZS_FMT_MONO_MSB),
+    .width = 122,
+    .height = 250,
+    .ram_width = 128,  /* 16 bytes of a RAM row hold the 122 columns */
+    .ram_height = 250,
+    .max_spi_hz = 20000000u,
+    .rotations = 0x01,
+    .refresh_ms = 4000u,
+    INIT(ssd1680_init),
+};
+
 static const zs_panel_desc *const all_panels[] = {
     &zs_panel_st7789_240x240, &zs_panel_st7789_240x320, &zs_panel_st7789_135x240,
     &zs_panel_ili9341,        &zs_panel_st7735_128x160, &zs_panel_gc9a01,
-    &zs_panel_ili9488,        &zs_panel_ssd1351,
+    &zs_panel_ili9488,        &zs_panel_ssd1351,        &zs_panel_ssd1306_128x64,
+    &zs_panel_ssd1306_128x32, &zs_panel_sh1106_132x64,  &zs_panel_ssd1680_122x250,
 };
 
 unsigned zs_panel_count(void)

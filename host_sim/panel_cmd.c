@@ -15,12 +15,14 @@
 
 #include "emu/emu.h"
 #include "emu/emu_bus.h"
+#include "emu/emu_mono.h"
 #include "emu/emu_window.h"
 #include "sim.h"
 #include "zs_app.h"
 #include "zs_opts.h"
 
 int sim_panel_main(int argc, char **argv);
+int sim_panel_mono(int argc, char **argv); /* panel_mono.c */
 
 #define PANEL_PROG "zspan-sim panel"
 
@@ -31,6 +33,11 @@ static const char panel_usage[] =
     "  st7735-128x160, gc9a01, ili9488, ssd1351 (--list: sizes and clocks).\n"
     ZS_APP_USAGE
     "  (here --band defaults to 1; meshes are fitted to the unit sphere)\n"
+    "Monochrome panels (ssd1306-128x64, ssd1306-128x32, sh1106-132x64, ssd1680-122x250):\n"
+    "  the demo in 1 bit; --out FILE.png the filled, dithered frame, --lines-out FILE.png\n"
+    "  the same view as a hidden-line drawing (default out/panel_lines.png); --i2c (OLEDs:\n"
+    "  I2C instead of 4-wire SPI, wire time at 400 kHz and 1 MHz); --diffuse (error\n"
+    "  diffusion instead of ordered dithering); --band N (multiples of 8 on OLEDs)\n"
     "Emulated panel:\n"
     "  --out FILE.png        the last frame as the panel shows it (default out/panel.png)\n"
     "  --seq PATTERN         every frame, e.g. out/seq/f_%03d.png\n"
@@ -336,8 +343,12 @@ int sim_panel_main(int argc, char **argv)
     zs_app_opts loop;
     zs_app_port ap;
     const emu_model *model;
-    int rc;
+    int rc, i;
 
+    /* the monochrome panels have their own emulator and loop */
+    for (i = 1; i + 1 < argc; i++)
+        if (strcmp(argv[i], "--panel") == 0 && emu_mono_model_find(argv[i + 1]) != NULL)
+            return sim_panel_mono(argc, argv);
     rc = parse(argc, argv, &o);
     if (rc != 0 || o.app.list || o.done) {
         if (o.app.list)

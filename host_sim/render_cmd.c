@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* zspan-sim render: meshes from files (assimp) -> PNG through the core. */
 #include "sim.h"
+#include "zs_hlines.h"
 
 #include <errno.h>
 #include <math.h>
@@ -182,6 +183,10 @@ static int parse_args(int argc, char **argv, sim_render_opts *o)
             if (m < 0)
                 return SIM_EXIT_USAGE;
             o->dump = v;
+        } else if (OPT("--svg-lines")) {
+            if (m < 0)
+                return SIM_EXIT_USAGE;
+            o->svg_lines = v;
         } else if (OPT("--background")) {
             if (m < 0 || zs_opt_color(SIM_PROG, "--background", v, &o->background) != 0)
                 return SIM_EXIT_USAGE;
@@ -365,6 +370,78 @@ static zs_color palette_color(uint32_t n)
     gg = gg < 0 ? 0 : gg > 255 ? 255 : gg;
     bb = bb < 0 ? 0 : bb > 255 ? 255 : bb;
     return ZS_RGB(rr, gg, bb);
+}
+
+/* The meshes' quantised vertices (as the core draws them) in eye space, their
+ * visible feature edges (app/zs_hlines.c) as an SVG. */
+static int write_svg_lines(const sim_render_opts *o, const zs_model *scene, const zs_mat34 *model,
+                           const zs_camera *cam)
+{
+    size_t nv = 0, nt = 0, i, k, v0 = 0, t0 = 0;
+    double *pos;
+    uint32_t *idx;
+    int *group, rc = -1;
+    zs_hl_view view;
+    zs_hl_result res;
+    for (i = 0; i < scene->count; i++) {
+        nv += scene->chunks[i].mesh.vertex_count;
+        nt += scene->chunks[i].mesh.triangle_count;
+    }
+    pos = malloc((nv + 1) * 3 * sizeof *pos);
+    idx = malloc((nt + 1) * 3 * sizeof *idx);
+    group = malloc((nt + 1) * sizeof *group);
+    if (!pos || !idx || !group)
+        goto out;
+    for (i = 0; i < scene->count; i++) {
+        const zs_mesh *m = &scene->chunks[i].mesh;
+        for (k = 0; k < m->vertex_count; k++) {
+            double p[3], w[3];
+            int a, b;
+            for (a = 0; a < 3; a++)
+                p[a] = m->positions[3 * k + a] * (m->scale / 65536.0);
+            for (a = 0; a < 3; a++) {
+                w[a] = p[a];
+                if (model)
+                    w[a] = (model->m[a][0] * p[0] + model->m[a][1] * p[1] + model->m[a][2] * p[2] +
+                            model->m[a][3]) / 65536.0;
+            }
+            for (a = 0; a < 3; a++) {
+                double e = cam->view.m[a][3] / 65536.0;
+                for (b = 0; b < 3; b++)
+                    e += cam->view.m[a][b] / 65536.0 * w[b];
+                pos[3 * (v0 + k) + (size_t)a] = e;
+            }
+        }
+        for (k = 0; k < m->triangle_count; k++) {
+            for (int c = 0; c < 3; c++)
+                idx[3 * (t0 + k) + (size_t)c] = (uint32_t)(v0 + m->indices[3 * k + c]);
+            group[t0 + k] = (int)i;
+        }
+        v0 += m->vertex_count;
+        t0 += m->triangle_count;
+    }
+    view.width = o->width;
+    view.height = o->height;
+    view.fov_deg = o->fov;
+    view.near_z = o->near_z;
+    view.crease_deg = 30.0;
+    if (zs_hl_compute(&view, pos, nv, idx, group, nt, &res) != 0) {
+        fprintf(stderr, "zspan-sim: out of memory (--svg-lines)\n");
+        goto out;
+    }
+    if (sim_make_parent_dirs(o->svg_lines) != 0 || zs_hl_write_svg(o->svg_lines, &view, &res) != 0)
+        fprintf(stderr, "zspan-sim: cannot write %s\n", o->svg_lines);
+    else
+        rc = 0;
+    if (rc == 0 && !o->quiet)
+        printf("svg-lines: %lu feature edges, %lu visible segments -> %s\n",
+               (unsigned long)res.feature_edges, (unsigned long)res.n, o->svg_lines);
+    zs_hl_free(&res);
+out:
+    free(pos);
+    free(idx);
+    free(group);
+    return rc;
 }
 
 static void dump_hook(void *user, uint16_t tag, const int32_t xy[6], const uint32_t z[3])
@@ -624,6 +701,8 @@ int sim_cmd_render(int argc, char **argv)
         }
     }
     zs_set_setup_hook(&r, NULL, NULL);
+    if (o.svg_lines != NULL && write_svg_lines(&o, &scene, model_ptr, &cam) != 0)
+        goto done;
 
     bpp = zs_format_bytes(sp.format);
     stride = (size_t)o.width * bpp;

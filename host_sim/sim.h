@@ -63,6 +63,7 @@ typedef struct sim_render_opts {
     const char *out;
     int out_set;
     const char *dump;
+    const char *svg_lines; /* --svg-lines FILE: the visible feature edges as SVG */
     zs_color background;
     int has_light;
     double light[4];

@@ -79,6 +79,8 @@ void sim_print_render_usage(FILE *f)
         "                        file's normals, smooth ones only when it has none)\n"
         "  --out FILE.png        output (default out/render.png; out/ is created, any\n"
         "                        other directory must exist)\n"
+        "  --svg-lines FILE      also the visible silhouettes, creases and boundaries (crease\n"
+        "                        30 degrees) as SVG lines, computed exactly on the host\n"
         "  --dump-tris FILE      one line per stored triangle record: tag, then x y z of\n"
         "                        each vertex (x, y in pixels, z window depth in [0, 1])\n"
         "  --background RRGGBB   background colour (default 000000)\n"

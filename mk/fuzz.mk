@@ -45,6 +45,7 @@ FUZZ_ZT_OBJ := $(FUZZ_DIR)/zt.o
 
 # Harnesses whose code under test is in the tree (others' areas may not be yet).
 FUZZ_HARNESSES := frame $(if $(wildcard host_sim/emu/emu.c),panel) \
+                  $(if $(wildcard host_sim/emu/emu_mono.c),mono) \
                   $(if $(wildcard tools/zspan-meshc.c),meshc) \
                   $(if $(wildcard ports/mcp2210/mcp2210.c),mcp2210)
 FUZZ_BINS = $(addprefix $(FUZZ_DIR)/fuzz_,$(FUZZ_HARNESSES))
@@ -95,6 +96,15 @@ $(FUZZ_DIR)/fuzz_panel: tests/fuzz/fuzz_panel.c tests/fuzz/fuzz_util.h $(FUZZ_DI
                         $(FUZZ_DIR)/emu/emu_png.o | deps
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -Ihost_sim/emu -fsanitize=fuzzer -o $@ $< $(FUZZ_DIR)/emu/emu.o \
 	    $(FUZZ_DIR)/emu/emu_png.o $(FUZZ_PNG_LIBS)
+
+# (b') the emulated monochrome controllers: emu_mono.c instrumented.
+$(FUZZ_DIR)/emu/emu_mono.o: host_sim/emu/emu_mono.c host_sim/emu/emu_mono.h | deps
+	@mkdir -p $(@D)
+	$(FUZZ_CC) -std=c99 -g -O1 -Iinclude $(FUZZ_SAN) -fsanitize=fuzzer-no-link -c $< -o $@
+$(FUZZ_DIR)/fuzz_mono: tests/fuzz/fuzz_mono.c tests/fuzz/fuzz_util.h $(FUZZ_DIR)/emu/emu_mono.o \
+                       $(FUZZ_DIR)/emu/emu_png.o $(FUZZ_DIR)/emu/emu.o | deps
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -Ihost_sim/emu -fsanitize=fuzzer -o $@ $< $(FUZZ_DIR)/emu/emu_mono.o \
+	    $(FUZZ_DIR)/emu/emu_png.o $(FUZZ_DIR)/emu/emu.o $(FUZZ_PNG_LIBS)
 
 # (c) the mesh converter, compiled into the harness (see fuzz_meshc.c); the core
 # checks its output.

@@ -22,10 +22,24 @@ unsigned zs_format_bytes(zs_format fmt)
         return 3;
     case ZS_FMT_GRAY8:
         return 1;
-    case ZS_FMT_COUNT:
+    default:
         break;
     }
     return 0;
+}
+
+size_t zs_format_stride(zs_format fmt, unsigned width)
+{
+    if (fmt == ZS_FMT_MONO_PAGE)
+        return width;
+    if (fmt == ZS_FMT_MONO_MSB)
+        return (width + 7u) / 8u;
+    return (size_t)width * zs_format_bytes(fmt);
+}
+
+int zs_format_is_mono(zs_format fmt)
+{
+    return fmt == ZS_FMT_MONO_PAGE || fmt == ZS_FMT_MONO_MSB;
 }
 
 void zs_pack_pixel(zs_format fmt, uint32_t rgb, uint8_t out[4])
@@ -49,7 +63,7 @@ void zs_pack_pixel(zs_format fmt, uint32_t rgb, uint8_t out[4])
     case ZS_FMT_RGB888:
         zs_store_rgb888(out, r, g, b);
         break;
-    case ZS_FMT_COUNT:
+    default:
         break;
     }
 }

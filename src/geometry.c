@@ -475,6 +475,8 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     c.r = r;
     c.mesh = m;
     c.model = model ? model : &zs_identity34;
+    if (r->priv.draw_starts && r->priv.n_tris < r->cfg.max_triangles) /* hidden lines */
+        r->priv.draw_starts[r->priv.n_tris >> 3] |= (uint8_t)(1u << (r->priv.n_tris & 7u));
     model_view(&c);
     prepare_clip_rows(&c);
     c.lit = (uint8_t)(r->shade.light_count > 0 || r->shade.ambient != ZS_FX_ONE);

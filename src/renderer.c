@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The renderer context: configuration, arena layout, frame life cycle and
  * the band API. */
-#include "zs_internal.h"
+#include "zs_mono.h"
 
 zs_config zs_config_default(uint16_t width, uint16_t height, uint16_t max_triangles,
                             uint16_t max_vertices, uint16_t max_active_edges)
@@ -25,7 +25,7 @@ static zs_status check_config(const zs_config *c)
     if (c->max_triangles == 0 || c->max_vertices == 0 || c->max_active_edges < 2 ||
         c->max_active_edges > ZS_MAX_ACTIVE_EDGES)
         return ZS_ERR_CAPACITY;
-    if (c->flags & ~(uint16_t)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY))
+    if (c->flags & ~(uint16_t)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES))
         return ZS_ERR_ARGUMENT;
     return ZS_OK;
 }
@@ -64,6 +64,15 @@ size_t zs_arena_bytes(const zs_config *cfg)
                               cfg->max_active_edges, cfg->flags);
 }
 
+/* Built with -DZS_NO_MONO the 1-bit stages (mono.c, lines.c) are never
+ * called, so a firmware link leaves them out (about 2.6 KB on Cortex-M0);
+ * the 1-bit formats are then unknown (ZS_ERR_FORMAT). */
+#ifdef ZS_NO_MONO
+#define MONO_BUILT(f) ((void)(f), 0)
+#else
+#define MONO_BUILT(f) zs_format_is_mono(f)
+#endif
+
 /* Takes n bytes (rounded up to 8) from the cursor. */
 static void *carve(uint8_t **cursor, size_t n)
 {
@@ -77,6 +86,7 @@ static ZS_NOINLINE void reset_shading(zs_renderer *r)
 {
     r->shade = zs_shade_default();
     r->priv.bpp = (uint8_t)zs_format_bytes(r->shade.format);
+    r->priv.out_format = (uint8_t)r->shade.format;
 }
 
 zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_config *cfg)
@@ -119,6 +129,18 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
         r->priv.zline_depth = line;
         r->priv.sort_keys = line;
         r->priv.zline_owner = carve(&cur, (size_t)cfg->width * 2u);
+    }
+    if (cfg->flags & ZS_CFG_MONO) {
+        r->priv.mono_grey = carve(&cur, cfg->width);
+        r->priv.mono_err = carve(&cur, (size_t)cfg->width * 2u);
+    }
+    if (cfg->flags & ZS_CFG_LINES) {
+        if (!r->priv.mono_grey)
+            r->priv.mono_grey = carve(&cur, cfg->width);
+        r->priv.line_ids[0] = carve(&cur, (size_t)cfg->width * 2u);
+        r->priv.line_ids[1] = carve(&cur, (size_t)cfg->width * 2u);
+        r->priv.tri_normal = carve(&cur, (size_t)cfg->max_triangles * ZS_TRI_NORMAL_BYTES);
+        r->priv.draw_starts = carve(&cur, ((size_t)cfg->max_triangles + 7u) / 8u);
     }
     /* the widest guard band whose projected 28.4 coordinates fit int16 */
     dim = cfg->width > cfg->height ? cfg->width : cfg->height;
@@ -181,6 +203,8 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
     r->priv.tag_counter = 0;
     r->priv.next_row = 0;
     memset(r->priv.buckets, 0xFF, (size_t)r->cfg.height * 2u);
+    if (r->priv.draw_starts)
+        memset(r->priv.draw_starts, 0, ((size_t)r->cfg.max_triangles + 7u) / 8u);
     r->priv.state = ZS_STATE_OPEN;
     return ZS_OK;
 }
@@ -197,8 +221,16 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
         return ZS_ERR_MODE;
     if ((r->cfg.flags & ZS_CFG_FLAT_ONLY) && (p->shading != ZS_SHADE_FLAT || p->fog.enabled))
         return ZS_ERR_MODE;
-    if ((unsigned)p->format >= (unsigned)ZS_FMT_COUNT)
+    if ((unsigned)p->format >= (unsigned)ZS_FMT_COUNT && !MONO_BUILT(p->format))
         return ZS_ERR_FORMAT;
+    if (zs_format_is_mono(p->format)) {
+        if (p->mono & ~(unsigned)(ZS_MONO_DIFFUSE | ZS_MONO_LINES | ZS_MONO_INVERT) ||
+            p->crease_deg >= 180)
+            return ZS_ERR_ARGUMENT;
+        if ((p->mono & ZS_MONO_LINES) ? !(r->cfg.flags & ZS_CFG_LINES)
+                                      : !(r->cfg.flags & ZS_CFG_MONO))
+            return ZS_ERR_MODE;
+    }
     if (p->light_count > ZS_MAX_LIGHTS || p->ambient < 0 ||
         (p->fog.enabled && p->fog.end <= p->fog.start) || p->background > 0xFFFFFFu ||
         p->fog.color > 0xFFFFFFu)
@@ -219,13 +251,36 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
     for (i = 0; i < p->light_count; i++)
         r->priv.light_dir[i] = dirs[i];
     r->shade = *p;
-    r->priv.bpp = (uint8_t)zs_format_bytes(p->format);
+    r->priv.out_format = (uint8_t)p->format;
+    if (zs_format_is_mono(p->format)) /* the stages render a scratch line */
+        r->shade.format = (p->mono & ZS_MONO_LINES) ? ZS_FMT_ID16 : ZS_FMT_GRAY8;
+    r->priv.bpp = (uint8_t)zs_format_bytes(r->shade.format);
     return ZS_OK;
+}
+
+/* One row of a 1-bit frame: the scratch line, then dithered and packed. */
+static void mono_row(zs_renderer *r, int y, uint8_t *out)
+{
+#ifdef ZS_NO_MONO
+    (void)r;
+    (void)y;
+    (void)out;
+#else
+    uint8_t *grey = r->priv.mono_grey;
+    if (r->shade.mono & ZS_MONO_LINES) {
+        zs_raster_row(r, y, (uint8_t *)r->priv.line_ids[0]);
+        zs_lines_row(r, y, grey);
+    } else {
+        zs_raster_row(r, y, grey);
+    }
+    zs_mono_row(r, y, grey, out);
+#endif
 }
 
 zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t stride)
 {
-    int y;
+    int y, mono;
+    size_t need, units;
     if (!r || !buf)
         return ZS_ERR_NULL;
     if (r->priv.state != ZS_STATE_OPEN && r->priv.state != ZS_STATE_RENDERING)
@@ -233,18 +288,39 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
     if (rows < 1 || y0 < r->priv.next_row || y0 >= (int)r->cfg.height ||
         rows > (int)r->cfg.height - y0)
         return ZS_ERR_ROW;
-    if (stride < (size_t)r->cfg.width * r->priv.bpp ||
-        (rows > 1 && /* no division for one row (a helper call on Cortex-M0) */
-         stride > (SIZE_MAX - (size_t)r->cfg.width * r->priv.bpp) / (size_t)rows))
+    mono = zs_format_is_mono((zs_format)r->priv.out_format);
+    need = zs_format_stride((zs_format)r->priv.out_format, r->cfg.width);
+    /* rows of the buffer: pages for the page layout */
+    units = r->priv.out_format == ZS_FMT_MONO_PAGE
+                ? (size_t)((y0 + rows - 1) / 8 - y0 / 8 + 1)
+                : (size_t)rows;
+    if (stride < need ||
+        (units > 1 && /* no division for one row (a helper call on Cortex-M0) */
+         stride > (SIZE_MAX - need) / units))
         return ZS_ERR_BUFFER; /* too small, or rows * stride past the address space */
     if (r->priv.state == ZS_STATE_OPEN) {
         zs_raster_begin(r);
+#ifndef ZS_NO_MONO
+        if (mono) {
+            zs_mono_begin(r);
+            if (r->shade.mono & ZS_MONO_LINES)
+                zs_lines_begin(r);
+        }
+#endif
         r->priv.state = ZS_STATE_RENDERING;
     }
-    for (y = r->priv.next_row; y < y0; y++)
+    for (y = r->priv.next_row; y < y0; y++) {
         zs_raster_row(r, y, 0);
-    for (y = y0; y < y0 + rows; y++)
-        zs_raster_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
+        r->priv.line_prev_row = 0; /* no ids of the row above */
+    }
+    for (y = y0; y < y0 + rows; y++) {
+        if (!mono)
+            zs_raster_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
+        else if (r->priv.out_format == ZS_FMT_MONO_PAGE)
+            mono_row(r, y, (uint8_t *)buf + (size_t)(y / 8 - y0 / 8) * stride);
+        else
+            mono_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
+    }
     r->priv.next_row = y0 + rows;
     r->stats.rows += (uint32_t)rows;
     if (r->priv.next_row >= (int)r->cfg.height)
@@ -257,7 +333,7 @@ zs_status zs_render_frame(zs_renderer *r, void *buf, size_t stride, int band_row
 {
     if (!r || !buf || !fn)
         return ZS_ERR_NULL;
-    if (band_rows < 1)
+    if (band_rows < 1 || (r->priv.out_format == ZS_FMT_MONO_PAGE && band_rows % 8 != 0))
         return ZS_ERR_ROW;
     if (r->priv.state != ZS_STATE_OPEN && r->priv.state != ZS_STATE_RENDERING)
         return ZS_ERR_STATE;
@@ -274,6 +350,11 @@ zs_status zs_render_frame(zs_renderer *r, void *buf, size_t stride, int band_row
             break;
     }
     return ZS_OK;
+}
+
+zs_format zs_frame_format(const zs_renderer *r)
+{
+    return r ? (zs_format)r->priv.out_format : ZS_FMT_RGB565_BE;
 }
 
 const zs_stats *zs_frame_stats(const zs_renderer *r)

@@ -103,6 +103,52 @@ extern "C" {
 #define ZS_SSD1351_RM_65K 0x40u       /* bits 7:6 = 01: 65k colours (2 bytes) */
 #define ZS_SSD1351_RM_262K 0x80u      /* bits 7:6 = 10: 262k colours (3 bytes, bits 5..0) */
 
+/* SSD1306 / SH1106 (monochrome OLED, 1-bit pages). Over 4-wire SPI every
+ * byte of a command, parameters included, goes with D/C low, so the driver
+ * sends each one as a parameterless bus command; over I2C a port frames a
+ * command as control byte 0x00 + bytes and pixel data as 0x40 + bytes. */
+#define ZS_SSD1306_MEMMODE 0x20u      /* 1 param: 0 horizontal, 1 vertical, 2 page */
+#define ZS_SSD1306_COLADDR 0x21u      /* 2 params: start, end column (inclusive) */
+#define ZS_SSD1306_PAGEADDR 0x22u     /* 2 params: start, end page (inclusive) */
+#define ZS_SSD1306_STARTLINE 0x40u    /* | line 0..63 */
+#define ZS_SSD1306_CONTRAST 0x81u     /* 1 param */
+#define ZS_SSD1306_CHARGEPUMP 0x8Du   /* 1 param: 0x14 on, 0x10 off */
+#define ZS_SSD1306_SEGREMAP 0xA0u     /* | 1: column 127 (SH1106: 131) -> SEG0 */
+#define ZS_SSD1306_RESUME 0xA4u       /* show the RAM (0xA5: every pixel on) */
+#define ZS_SSD1306_NORMAL 0xA6u
+#define ZS_SSD1306_INVERSE 0xA7u
+#define ZS_SSD1306_MUX 0xA8u          /* 1 param: rows - 1 */
+#define ZS_SSD1306_DISPOFF 0xAEu
+#define ZS_SSD1306_DISPON 0xAFu
+#define ZS_SSD1306_PAGE 0xB0u         /* | page 0..7: page mode start page */
+#define ZS_SSD1306_COMSCAN 0xC0u      /* | 8: scan COM[N-1] -> COM0 */
+#define ZS_SSD1306_OFFSET 0xD3u       /* 1 param */
+#define ZS_SSD1306_CLOCK 0xD5u        /* 1 param */
+#define ZS_SSD1306_PRECHARGE 0xD9u    /* 1 param */
+#define ZS_SSD1306_COMPINS 0xDAu      /* 1 param: 0x02 sequential, 0x12 alternative */
+#define ZS_SSD1306_VCOMH 0xDBu        /* 1 param */
+#define ZS_SH1106_DCDC 0xADu          /* 1 param: 0x8B on */
+#define ZS_SSD1306_I2C_ADDR 0x3Cu     /* 7-bit address with SA0 low (0x3D high) */
+
+/* SSD1680 (e-paper, 1-bit RAM, row-major MSB first, bit 1 = white). */
+#define ZS_SSD1680_DRIVER_OUTPUT 0x01u /* 3 params: gates - 1 (low, high), scan */
+#define ZS_SSD1680_DEEP_SLEEP 0x10u    /* 1 param */
+#define ZS_SSD1680_DATA_ENTRY 0x11u    /* 1 param: bit 0 X+, bit 1 Y+, bit 2 Y first */
+#define ZS_SSD1680_SWRESET 0x12u
+#define ZS_SSD1680_TEMP_SENSOR 0x18u   /* 1 param: 0x80 internal */
+#define ZS_SSD1680_ACTIVATE 0x20u      /* run the update sequence of 0x22 (BUSY) */
+#define ZS_SSD1680_UPDATE_CTRL1 0x21u  /* 2 params: RAM options */
+#define ZS_SSD1680_UPDATE_CTRL2 0x22u  /* 1 param: the update sequence */
+#define ZS_SSD1680_WRITE_BW 0x24u      /* write the black/white RAM */
+#define ZS_SSD1680_WRITE_RED 0x26u     /* write the second RAM (mode 2: the old image) */
+#define ZS_SSD1680_BORDER 0x3Cu        /* 1 param */
+#define ZS_SSD1680_RAM_X 0x44u         /* 2 params: start, end byte (inclusive) */
+#define ZS_SSD1680_RAM_Y 0x45u         /* 4 params: start, end gate (16-bit LE, inclusive) */
+#define ZS_SSD1680_RAM_X_COUNT 0x4Eu   /* 1 param */
+#define ZS_SSD1680_RAM_Y_COUNT 0x4Fu   /* 2 params */
+#define ZS_SSD1680_SEQ_FULL 0xF7u      /* clock, analog, temperature, LUT mode 1, display, off */
+#define ZS_SSD1680_SEQ_PARTIAL 0xFFu   /* the same with LUT mode 2 (only changed pixels) */
+
 /* ------------------------------------------------------------------ */
 /* Results                                                              */
 /* ------------------------------------------------------------------ */
@@ -113,7 +159,7 @@ typedef enum zs_panel_status {
     ZS_PANEL_ERR_NULL,         /* NULL panel, description, bus, renderer or buffer */
     ZS_PANEL_ERR_IO,           /* the bus reported a failure */
     ZS_PANEL_ERR_FORMAT,       /* pixel format not supported by this panel */
-    ZS_PANEL_ERR_ROTATION,     /* rotation not 0..3 */
+    ZS_PANEL_ERR_ROTATION,     /* rotation not 0..3, or one the controller cannot do */
     ZS_PANEL_ERR_WINDOW,       /* empty window or outside the visible area */
     ZS_PANEL_ERR_STATE,        /* panel not initialised, or pixels without an open
                                   window or past its end */
@@ -180,6 +226,9 @@ typedef struct zs_panel_ops {
      * the controller takes zspan's bytes as they are (then every write is
      * zero-copy). */
     zs_panel_encode_fn (*encoder)(const struct zs_panel *p);
+    /* Optional. Runs after the last band of zs_panel_stream (e-paper: the
+     * refresh, and the wait for it). */
+    zs_panel_status (*frame_end)(struct zs_panel *p);
 } zs_panel_ops;
 
 /* MIPI DCS (ST7789, ILI9341, ST7735, GC9A01, ILI9488): everything
@@ -188,6 +237,17 @@ extern const zs_panel_ops zs_panel_ops_dcs;
 /* Solomon SSD1351: remap register for orientation and colour depth; at
  * 18 bpp the wire takes each channel in bits 5..0 (an encoder). */
 extern const zs_panel_ops zs_panel_ops_ssd1351;
+/* Solomon SSD1306 (horizontal addressing: one window, the bytes flow page
+ * after page) and Sino Wealth SH1106 (page addressing only: the driver sets
+ * page and column before each page, so writes must not cross a page end).
+ * Format ZS_FMT_MONO_PAGE; MX -> segment remap, MY -> COM scan direction,
+ * so rotations 0 and 2 (a byte is 8 pixels of a column: no exchange). */
+extern const zs_panel_ops zs_panel_ops_ssd1306;
+extern const zs_panel_ops zs_panel_ops_sh1106;
+/* Solomon SSD1680 e-paper: ZS_FMT_MONO_MSB into the black/white RAM, then a
+ * full refresh (or a partial one: see zs_panel.partial) with the BUSY wait
+ * as a delay. Rotation 0 only. */
+extern const zs_panel_ops zs_panel_ops_ssd1680;
 
 /* ------------------------------------------------------------------ */
 /* Panel descriptions (constant tables)                                 */
@@ -209,7 +269,7 @@ typedef struct zs_panel_desc {
                                     this module); SSD1351: the same bits, mapped
                                     to its remap register by the driver */
     uint8_t invert;              /* 1: the glass needs INVON (IPS) for normal colours */
-    uint8_t formats;             /* bit (1u << zs_format) per supported format */
+    uint16_t formats;            /* bit (1u << zs_format) per supported format */
     uint8_t colmod_565;          /* DCS: COLMOD for 16 bpp (0 = unsupported) */
     uint8_t colmod_666;          /* DCS: COLMOD for 18 bpp (0 = unsupported) */
     uint16_t width, height;      /* visible pixels at rotation 0 */
@@ -219,6 +279,9 @@ typedef struct zs_panel_desc {
     uint32_t max_spi_hz;         /* rated write clock */
     const uint8_t *init;         /* module init records (see ZS_INIT_DELAY) */
     uint16_t init_len;           /* bytes in init */
+    uint8_t rotations;           /* bit r per rotation the controller can do; 0 = all */
+    uint8_t mux;                 /* SSD1306/SH1106: COM pins config (0x02, 0x12) */
+    uint32_t refresh_ms;         /* e-paper: the longest full refresh (BUSY wait) */
 } zs_panel_desc;
 
 /* Built-in tables. */
@@ -230,6 +293,10 @@ extern const zs_panel_desc zs_panel_st7735_128x160;
 extern const zs_panel_desc zs_panel_gc9a01;         /* 240x240 round */
 extern const zs_panel_desc zs_panel_ili9488;        /* 320x480, 480x320 at rotation 1/3 */
 extern const zs_panel_desc zs_panel_ssd1351;        /* 128x128 OLED */
+extern const zs_panel_desc zs_panel_ssd1306_128x64; /* 0.96" OLED, I2C or SPI */
+extern const zs_panel_desc zs_panel_ssd1306_128x32; /* 0.91" OLED */
+extern const zs_panel_desc zs_panel_sh1106_132x64;  /* 1.3" OLED, 132-column RAM */
+extern const zs_panel_desc zs_panel_ssd1680_122x250; /* 2.13" e-paper */
 
 /* Number of built-in tables, the i-th one (NULL past the end), and lookup by
  * name (exact, NULL if unknown). */
@@ -257,6 +324,13 @@ typedef struct zs_panel {
     uint8_t ready;             /* init done */
     uint8_t use_ramwrc;        /* DCS: send RAMWRC before each later write (default 0) */
     uint8_t scratch_next;      /* the scratch buffer zs_panel_write fills next */
+    uint8_t partial;           /* e-paper: the next refresh is partial (set it to 1
+                                  once the glass shows what the second RAM holds,
+                                  see zs_panel_ops_ssd1680) */
+    uint8_t write_base;        /* e-paper: windows write the second RAM (the base a
+                                  partial refresh compares with); no refresh */
+    uint8_t mono_page;         /* SH1106: first page of the open window */
+    uint16_t mono_col, mono_cols; /* SH1106: its first RAM column and width */
     uint16_t width, height;    /* visible size at this rotation */
     uint16_t x_offset, y_offset;  /* RAM address of visible (0, 0) at this rotation */
     uint32_t window_bytes;     /* bytes left in the current window (0 = none open) */
@@ -274,8 +348,13 @@ zs_panel_status zs_panel_init(zs_panel *p, const zs_panel_desc *desc, zs_bus *bu
                               zs_format format, unsigned rotation);
 
 /* Bytes per pixel on the wire for a format (2 or 3; 0 if the panel does not
- * support it). */
+ * support it, and for the 1-bit formats). */
 unsigned zs_panel_bytes_per_pixel(const zs_panel_desc *desc, zs_format format);
+/* Does the panel take `format` (any kind)? */
+int zs_panel_supports(const zs_panel_desc *desc, zs_format format);
+/* Bytes a w x h window takes in `format`: w * h * bytes per pixel, w per
+ * page of 8 rows (ZS_FMT_MONO_PAGE), (w + 7) / 8 per row (ZS_FMT_MONO_MSB). */
+size_t zs_panel_window_bytes(zs_format format, unsigned w, unsigned h);
 
 /* MADCTL (DCS) for a rotation, with the module's mirror and BGR bits. */
 uint8_t zs_panel_madctl_for(const zs_panel_desc *desc, unsigned rotation);
@@ -297,7 +376,9 @@ zs_panel_status zs_panel_backlight(zs_panel *p, uint8_t level);
 
 /* Opens the half-open window [x0, x1) x [y0, y1) (panel coordinates) and
  * starts a memory write (DCS: CASET, RASET, RAMWR; SSD1351: 0x15, 0x75, 0x5C).
- * Pixels then go row by row, left to right, top to bottom. */
+ * Pixels then go row by row, left to right, top to bottom (ZS_FMT_MONO_PAGE:
+ * page by page, y0 and y1 multiples of 8 or y1 the height; ZS_FMT_MONO_MSB:
+ * x0 and x1 multiples of 8 or x1 the width; else ZS_PANEL_ERR_WINDOW). */
 zs_panel_status zs_panel_window(zs_panel *p, uint16_t x0, uint16_t y0, uint16_t x1, uint16_t y1);
 
 /* Sends n pixel bytes (p->format) of the open window (any chunking, not

@@ -144,6 +144,13 @@ const char *zs_strerror(zs_status status);
 #define ZS_CFG_NO_ZLINE 0x01u    /* no z-buffer line: ZS_MODE_ZLINE is refused */
 #define ZS_CFG_FLAT_ONLY 0x02u   /* no per-vertex colour or fog: ZS_SHADE_GOURAUD
                                     and fog are refused (flat and lit faces work) */
+/* Features a build adds (they cost arena only when asked for): */
+#define ZS_CFG_MONO 0x04u        /* 1-bit output (ZS_FMT_MONO_*): a grey scratch line
+                                    and one line of diffusion error, 3 B per column */
+#define ZS_CFG_LINES 0x08u       /* hidden-line drawing (ZS_MONO_LINES): two lines of
+                                    triangle ids and a flag line (5 B per column,
+                                    1 B shared with ZS_CFG_MONO) and a normal and
+                                    a draw-start bit per triangle record (8 B + 1 bit) */
 
 /* Sizes of the records the arena holds (checked against sizeof in src/). */
 #define ZS_VERTEX_BYTES 8u        /* screen x, y (28.4 in int16) and depth */
@@ -152,6 +159,7 @@ const char *zs_strerror(zs_status status);
 #define ZS_EDGE_BYTES 28u
 #define ZS_ACTIVE_BYTES 56u       /* per active triangle: depth plane, span state */
 #define ZS_ACTIVE_COLOR_BYTES 36u /* per active triangle: colour planes */
+#define ZS_TRI_NORMAL_BYTES 8u    /* ZS_CFG_LINES: a record's eye-space normal, draw */
 #define ZS_ARENA_ALIGN 8u
 
 /* Internal: n rounded up to a multiple of ZS_ARENA_ALIGN. */
@@ -164,7 +172,9 @@ const char *zs_strerror(zs_status status);
  * Includes alignment slack; a compile-time constant when the arguments are.
  * Per pool: vertices 8 B (+4 B shade), triangle records 12 B, row buckets
  * 2 B per row, edges 32 B, active triangles 60 B (+36 B colour planes), the
- * z-buffer line 10 B per column. */
+ * z-buffer line 10 B per column; with ZS_CFG_MONO 3 B per column, with
+ * ZS_CFG_LINES 5 B per column (4 with ZS_CFG_MONO too) and 8 B and 1 bit
+ * per triangle record. */
 #define ZS_ARENA_BYTES_CFG(w, h, max_tris, max_verts, max_edges, flags)            \
     (ZS_ROUND8_((size_t)(max_verts) * ZS_VERTEX_BYTES) +                            \
      (((flags) & ZS_CFG_FLAT_ONLY) ? 0u                                             \
@@ -180,9 +190,15 @@ const char *zs_strerror(zs_status status);
      2u * ZS_ROUND8_((size_t)((max_edges) / 2u) * 2u) +                             \
      (((flags) & ZS_CFG_NO_ZLINE) ? 0u                                              \
                                   : ZS_ROUND8_((size_t)(w) * 8u) + ZS_ROUND8_((size_t)(w) * 2u)) + \
+     (((flags) & (ZS_CFG_MONO | ZS_CFG_LINES)) ? ZS_ROUND8_((size_t)(w)) : 0u) +      \
+     (((flags) & ZS_CFG_MONO) ? ZS_ROUND8_((size_t)(w) * 2u) : 0u) +                \
+     (((flags) & ZS_CFG_LINES) ? 2u * ZS_ROUND8_((size_t)(w) * 2u) +                 \
+                                     ZS_ROUND8_((size_t)(max_tris) * ZS_TRI_NORMAL_BYTES) + \
+                                     ZS_ROUND8_(((size_t)(max_tris) + 7u) / 8u)     \
+                               : 0u) +                                              \
      ZS_ARENA_ALIGN)
 
-/* All features (both visibility modes, Gouraud and fog). */
+/* Both visibility modes, Gouraud and fog; no 1-bit output, no hidden lines. */
 #define ZS_ARENA_BYTES(w, h, max_tris, max_verts, max_edges)                        \
     ZS_ARENA_BYTES_CFG(w, h, max_tris, max_verts, max_edges, 0u)
 
@@ -193,7 +209,8 @@ typedef struct zs_config {
     uint16_t max_active_edges;    /* 2..ZS_MAX_ACTIVE_EDGES: two per triangle
                                      crossing one row (edges that two
                                      triangles share are stored once) */
-    uint16_t flags;               /* ZS_CFG_*; 0 = everything */
+    uint16_t flags;               /* ZS_CFG_*; 0 = every feature but the added ones
+                                     (ZS_CFG_MONO, ZS_CFG_LINES) */
 } zs_config;
 
 zs_config zs_config_default(uint16_t width, uint16_t height, uint16_t max_triangles,
@@ -270,7 +287,10 @@ typedef enum zs_shading {
     ZS_SHADE_GOURAUD = 1   /* colours per vertex (lit per vertex), interpolated */
 } zs_shading;
 
-/* Output pixel formats for zs_render_rows. */
+/* Output pixel formats for zs_render_rows. ZS_FMT_COUNT counts the byte
+ * formats (0 .. ZS_FMT_COUNT-1, whole bytes per pixel); the 1-bit formats
+ * follow at ZS_FMT_MONO_PAGE and ZS_FMT_MONO_MSB (they need ZS_CFG_MONO, or
+ * ZS_CFG_LINES for line drawings). */
 typedef enum zs_format {
     ZS_FMT_RGB565_BE = 0,  /* 2 bytes, big-endian: the SPI wire order */
     ZS_FMT_RGB565 = 1,     /* 2 bytes, native uint16_t */
@@ -278,11 +298,39 @@ typedef enum zs_format {
     ZS_FMT_GRAY8 = 3,      /* 1 byte luma (77 R + 150 G + 29 B) / 256 */
     ZS_FMT_RGB888 = 4,     /* 3 bytes R, G, B */
     ZS_FMT_ID16 = 5,       /* 2 bytes native: triangle tag (see zs_draw), 0 = none */
-    ZS_FMT_COUNT
+    ZS_FMT_COUNT,
+    /* 1 bit per pixel, 1 = light (lit OLED pixel, white e-paper pixel) unless
+     * ZS_MONO_INVERT. The grey (GRAY8 luma) is dithered (ZS_MONO_*). */
+    ZS_FMT_MONO_PAGE = 8,  /* SSD1306 pages: byte x of page p holds column x of
+                              rows 8p .. 8p+7, row 8p + k in bit k (LSB on top).
+                              zs_render_rows(r, y0, rows, buf, stride): page
+                              y0 / 8 at buf, the next at buf + stride (>= width);
+                              a row sets its bit and keeps the other 7 (the
+                              screen's last row clears the bits below it). */
+    ZS_FMT_MONO_MSB = 9    /* row-major (e-paper): row k at buf + k * stride
+                              (>= (width + 7) / 8), pixel x in byte x / 8, bit
+                              7 - x % 8; the unused low bits of the last byte 0 */
 } zs_format;
 
-/* Bytes per pixel of a format (0 for an unknown one). */
+/* Bytes per pixel of a byte format (0 for the 1-bit formats and unknown ones). */
 unsigned zs_format_bytes(zs_format fmt);
+/* The smallest stride zs_render_rows accepts for a format and width: width *
+ * bytes per pixel, width for ZS_FMT_MONO_PAGE (one byte per column of a
+ * page), (width + 7) / 8 for ZS_FMT_MONO_MSB; 0 for an unknown format. */
+size_t zs_format_stride(zs_format fmt, unsigned width);
+/* Is fmt one of the 1-bit formats? */
+int zs_format_is_mono(zs_format fmt);
+
+/* zs_shade_params.mono, for the 1-bit formats (0: ordered dithering). */
+#define ZS_MONO_DIFFUSE 0x01u  /* error diffusion (Floyd-Steinberg weights, left to
+                                  right) instead of the 8x8 Bayer matrix; one line
+                                  of error carried between rows, so the image is
+                                  the same whatever the band height */
+#define ZS_MONO_LINES 0x02u    /* hidden-line drawing instead of filled surfaces
+                                  (needs ZS_CFG_LINES): bit 1 on the pixels of
+                                  visible silhouettes, creases and boundaries
+                                  between draw calls, one pixel wide */
+#define ZS_MONO_INVERT 0x04u   /* every output bit inverted (dark lines on light) */
 
 #define ZS_MAX_LIGHTS 2
 
@@ -307,9 +355,14 @@ typedef struct zs_shade_params {
     uint8_t light_count;             /* 0..ZS_MAX_LIGHTS */
     zs_light lights[ZS_MAX_LIGHTS];
     zs_fog fog;
+    uint8_t mono;                    /* ZS_MONO_*, for the 1-bit formats */
+    uint8_t crease_deg;              /* ZS_MONO_LINES: a shared edge is drawn where
+                                        its faces' normals differ by more than this
+                                        (1..179 degrees; 0 = 30) */
 } zs_shade_params;
 
-/* Flat, RGB565 big-endian, black background, unlit (ambient 1.0), no fog. */
+/* Flat, RGB565 big-endian, black background, unlit (ambient 1.0), no fog,
+ * ordered dithering. */
 zs_shade_params zs_shade_default(void);
 
 /* ------------------------------------------------------------------ */
@@ -389,6 +442,13 @@ typedef struct zs_renderer_private {
     uint32_t *sort_keys;            /* span mode: edge sort keys, in the
                                        z-buffer line's storage (idle then) */
     uint16_t *zline_owner;          /* triangle owning each z-buffer pixel */
+    uint8_t *mono_grey;             /* ZS_CFG_MONO: the row in GRAY8 before dithering */
+    int16_t *mono_err;              /* ZS_CFG_MONO: diffusion error for the next row */
+    uint16_t *line_ids[2];          /* ZS_CFG_LINES: this row's and the last row's ids */
+    int16_t *tri_normal;            /* ZS_CFG_LINES: unit normal (Q14) and draw number
+                                       per record */
+    uint8_t *draw_starts;           /* ZS_CFG_LINES: bit per record, set where a draw's
+                                       records begin */
     int32_t guard;                  /* guard band, in units of w */
     /* frame state */
     zs_vec3 light_dir[ZS_MAX_LIGHTS]; /* unit, Q16.16 */
@@ -402,6 +462,11 @@ typedef struct zs_renderer_private {
     uint16_t others_lo;               /* span walk: least depth bound of the rest */
     uint8_t state, mode, bpp;
     uint8_t steep;                    /* a steep plane is active this frame */
+    uint8_t out_format;               /* the format asked for; shade.format is the
+                                         scratch line's (GRAY8, ID16) for 1-bit ones */
+    uint8_t line_prev_row;            /* line_ids[1] holds the row above */
+    int32_t crease_cos;               /* cos of the crease angle, Q28 */
+    int64_t line_depth_a;             /* far / (far - near), Q30: 1/w ~ A - depth */
     zs_setup_hook_fn setup_hook;
     void *setup_hook_user;
 } zs_renderer_private;
@@ -413,7 +478,9 @@ typedef struct zs_renderer_private {
 typedef struct zs_renderer {
     zs_config cfg;         /* the configuration given to zs_init */
     zs_stats stats;        /* this frame's statistics (zs_frame_stats) */
-    zs_shade_params shade; /* this frame's shading (zs_frame_shading) */
+    zs_shade_params shade; /* this frame's shading (zs_frame_shading); with a
+                              1-bit format its format field holds the scratch
+                              line's (GRAY8, or ID16 for line drawings) */
     zs_camera cam;         /* this frame's camera (zs_frame_begin) */
     zs_renderer_private priv;
 } zs_renderer;
@@ -428,7 +495,10 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
 /* Starts a frame: clears the pools and statistics. The camera is copied. */
 zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mode);
 /* Shading for the frame; call after zs_frame_begin and before the first
- * zs_draw (zs_frame_begin resets it to zs_shade_default()). */
+ * zs_draw (zs_frame_begin resets it to zs_shade_default()). The 1-bit
+ * formats need ZS_CFG_MONO (ZS_MONO_LINES: ZS_CFG_LINES), else ZS_ERR_MODE;
+ * unknown ZS_MONO_* bits or crease_deg >= 180 give ZS_ERR_ARGUMENT (mono and
+ * crease_deg are ignored with a byte format). */
 zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *params);
 
 /* Capacity policy: a draw's vertices that do not fit the vertex pool are
@@ -447,7 +517,7 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *params);
 zs_status zs_draw(zs_renderer *r, const zs_mesh *mesh, const zs_mat34 *model);
 
 /* Renders rows y0 .. y0+rows-1 into buf (row k at buf + k*stride) in the
- * frame's format. Rows must be asked for in increasing order; rows skipped
+ * frame's format (the 1-bit formats: see ZS_FMT_MONO_PAGE / _MSB). Rows must be asked for in increasing order; rows skipped
  * over are not rendered (useful for partial updates). Every pixel of each row
  * is written exactly once in span mode. */
 zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t stride);
@@ -456,10 +526,15 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
 typedef int (*zs_band_fn)(void *user, int y0, int rows, const void *buf, size_t stride);
 
 /* Convenience: renders the rest of the frame band by band into buf (band_rows
- * rows of stride bytes) and hands each band to fn. A non-zero return from fn
+ * rows of stride bytes; ZS_FMT_MONO_PAGE: band_rows / 8 pages, band_rows a
+ * multiple of 8, else ZS_ERR_ROW) and hands each band to fn. A non-zero return from fn
  * stops the frame early (ZS_ERR_STATE is not set; ZS_OK is returned). */
 zs_status zs_render_frame(zs_renderer *r, void *buf, size_t stride, int band_rows,
                           zs_band_fn fn, void *user);
+
+/* The pixel format the frame renders in (what zs_frame_shading was given;
+ * for the 1-bit formats shade.format holds the scratch line's). */
+zs_format zs_frame_format(const zs_renderer *r);
 
 /* Statistics of the current (or last) frame. */
 const zs_stats *zs_frame_stats(const zs_renderer *r);

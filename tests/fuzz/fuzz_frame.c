@@ -449,7 +449,7 @@ static int decode_scene(fz_reader *d, scene *s)
         unsigned allowed = 0;
 #ifdef ZS_CFG_NO_ZLINE
         c.flags = fz_u16(d);
-        if (c.flags & ~(unsigned)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY))
+        if (c.flags & ~(unsigned)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES))
             allowed |= BIT(ZS_ERR_ARGUMENT);
 #endif
         if (c.width == 0 || c.height == 0 || c.width > ZS_MAX_DIM || c.height > ZS_MAX_DIM)
@@ -907,6 +907,118 @@ static uint16_t id_at(const frame_out *o, int w, int x, int y)
 /* ------------------------------------------------------------------ */
 
 /* FUZZ_VERBOSE=1 ./fuzz_frame input: prints the decoded scene (for repros). */
+/* ------------------------------------------------------------------ */
+/* The 1-bit formats                                                    */
+/* ------------------------------------------------------------------ */
+
+static uint8_t g_grey[MAXW * MAXH], g_bits[MAXW * MAXH], g_mono[2][MAXW * MAXH];
+static int g_err[(MAXW + 2) * (MAXH + 1)];
+
+/* This harness's own dithering of a GRAY8 frame (the header's rules). */
+static void dither_ref(const uint8_t *g, int w, int h, int diffuse, uint8_t *bits)
+{
+    static const uint8_t bayer[8][8] = {
+        {0, 32, 8, 40, 2, 34, 10, 42},  {48, 16, 56, 24, 50, 18, 58, 26},
+        {12, 44, 4, 36, 14, 46, 6, 38}, {60, 28, 52, 20, 62, 30, 54, 22},
+        {3, 35, 11, 43, 1, 33, 9, 41},  {51, 19, 59, 27, 49, 17, 57, 25},
+        {15, 47, 7, 39, 13, 45, 5, 37}, {63, 31, 55, 23, 61, 29, 53, 21}};
+    memset(g_err, 0, sizeof g_err);
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            if (!diffuse) {
+                bits[y * w + x] = 128 * g[y * w + x] > 255 * (2 * bayer[y & 7][x & 7] + 1);
+                continue;
+            }
+            int *e0 = &g_err[y * (w + 2) + x + 1], *e1 = e0 + (w + 2);
+            int v = g[y * w + x] + *e0, on = v >= 128, e = v - (on ? 255 : 0);
+            int d1 = e / 16, d3 = 3 * e / 16, d5 = 5 * e / 16;
+            bits[y * w + x] = (uint8_t)on;
+            e0[1] += e - d1 - d3 - d5;
+            e1[-1] += d3;
+            e1[0] += d5;
+            e1[1] += d1;
+        }
+}
+
+static int bit_of(const uint8_t *img, zs_format fmt, int w, int x, int y)
+{
+    if (fmt == ZS_FMT_MONO_PAGE)
+        return (img[(y / 8) * w + x] >> (y % 8)) & 1;
+    return (img[y * ((w + 7) / 8) + x / 8] >> (7 - x % 8)) & 1;
+}
+
+/* One whole frame in `fmt` with the scene's look and ZS_MONO_* flags mono,
+ * bands of `band` rows; returns 0 when the shading was refused. */
+static int mono_frame(zs_renderer *r, const scene *s, zs_visibility mode, zs_format fmt,
+                      unsigned mono, int band, uint8_t *img)
+{
+    int w = s->cfg.width, h = s->cfg.height;
+    zs_shade_params p = s->call_shading ? s->sp : zs_shade_default();
+    p.format = fmt;
+    p.mono = (uint8_t)mono;
+    FZ_CHECK(zs_frame_begin(r, &s->cam, mode) == ZS_OK, "mono frame_begin");
+    if (zs_frame_shading(r, &p) != ZS_OK)
+        return 0;
+    for (int i = 0; i < s->nmesh; i++)
+        zs_draw(r, &s->mesh[i].m, s->mesh[i].has_model ? &s->mesh[i].model : NULL);
+    size_t stride = zs_format_stride(fmt, (unsigned)w);
+    for (int y = 0; y < h; y += band) {
+        int n = band < h - y ? band : h - y;
+        uint8_t *dst = fmt == ZS_FMT_GRAY8      ? img + (size_t)y * stride
+                       : fmt == ZS_FMT_MONO_PAGE ? img + (size_t)(y / 8) * stride
+                                                 : img + (size_t)y * stride;
+        zs_status st = zs_render_rows(r, y, n, dst, stride);
+        FZ_CHECK(st == ZS_OK, "mono render_rows returned %d", (int)st);
+    }
+    return 1;
+}
+
+/* Filled 1-bit frames equal this harness's dithering of the GRAY8 frame in
+ * both modes; line drawings are the same in both modes and layouts, and a
+ * drawn pixel always shows another triangle than its left or upper
+ * neighbour in the ID16 frame. */
+static void check_mono(const scene *s, const frame_out *id)
+{
+    static uint8_t arena[ZS_ARENA_BYTES_CFG(MAXW, MAXH, 600, 600, 64, ZS_CFG_MONO | ZS_CFG_LINES)];
+    zs_config c = s->cfg;
+    zs_renderer r;
+    int w = c.width, h = c.height, band = 1 + (s->misuse + (unsigned)w) % 11u;
+    c.flags = (uint16_t)(c.flags | ZS_CFG_MONO | ZS_CFG_LINES);
+    if (zs_arena_bytes(&c) > sizeof arena || zs_init(&r, arena, sizeof arena, &c) != ZS_OK)
+        return;
+    if (!mono_frame(&r, s, ZS_MODE_SPAN, ZS_FMT_GRAY8, 0, h, g_grey))
+        return;
+    for (int k = 0; k < 2; k++) {
+        zs_format fmt = k ? ZS_FMT_MONO_MSB : ZS_FMT_MONO_PAGE;
+        int ok = mono_frame(&r, s, k ? ZS_MODE_SPAN : (NO_ZLINE(c) ? ZS_MODE_SPAN : ZS_MODE_ZLINE),
+                            fmt, k ? ZS_MONO_DIFFUSE : 0u, band, g_mono[0]);
+        FZ_CHECK(ok, "mono shading refused where GRAY8 was taken");
+        dither_ref(g_grey, w, h, k, g_bits);
+        for (int y = 0; y < h; y++)
+            for (int x = 0; x < w; x++)
+                FZ_CHECK(bit_of(g_mono[0], fmt, w, x, y) == g_bits[y * w + x],
+                         "1-bit frame (%s) differs from the dithered grey at (%d,%d)",
+                         k ? "msb, diffusion" : "page, bayer", x, y);
+    }
+    /* line drawings */
+    if (!mono_frame(&r, s, ZS_MODE_SPAN, ZS_FMT_MONO_PAGE, ZS_MONO_LINES, band, g_mono[0]))
+        return;
+    FZ_CHECK(mono_frame(&r, s, NO_ZLINE(c) ? ZS_MODE_SPAN : ZS_MODE_ZLINE, ZS_FMT_MONO_MSB,
+                        ZS_MONO_LINES, 8, g_mono[1]), "lines refused the second time");
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            int a = bit_of(g_mono[0], ZS_FMT_MONO_PAGE, w, x, y);
+            FZ_CHECK(a == bit_of(g_mono[1], ZS_FMT_MONO_MSB, w, x, y),
+                     "line drawings differ (span page / zline msb) at (%d,%d)", x, y);
+            if (!a || !id->rendered[y] || (y > 0 && !id->rendered[y - 1]))
+                continue;
+            uint16_t t = id_at(id, w, x, y);
+            FZ_CHECK((x > 0 && id_at(id, w, x - 1, y) != t) ||
+                         (y > 0 && id_at(id, w, x, y - 1) != t),
+                     "line pixel (%d,%d) inside one triangle (tag %u)", x, y, t);
+        }
+}
+
 static int g_verbose;
 
 static void dump_scene(const scene *s)
@@ -985,7 +1097,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 
     size_t need = zs_arena_bytes(cfg);
 #ifdef ZS_CFG_NO_ZLINE
-    if (cfg->flags & ~(unsigned)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY)) {
+    if (cfg->flags & ~(unsigned)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES)) {
         static uint8_t some[64];
         zs_renderer r0;
         FZ_CHECK(need == 0, "zs_arena_bytes with unknown flags %#x = %zu", cfg->flags, need);
@@ -1205,6 +1317,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         default: break;
         }
     }
+    /* the 1-bit formats join the same scene */
+    if (g_span.complete && id->nrendered == H && s->cfg.max_triangles <= 600 &&
+        s->cfg.max_vertices <= 600 && s->cfg.max_active_edges <= 64)
+        check_mono(s, id);
     free(block);
     return 0;
 }

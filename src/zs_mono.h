@@ -1,0 +1,21 @@
+/* Internal: the 1-bit output and hidden-line stages (mono.c, lines.c),
+ * driven by renderer.c. */
+#ifndef ZSPAN_MONO_H
+#define ZSPAN_MONO_H
+
+#include "zs_internal.h"
+
+/* mono.c: clears the diffusion error (first row of a frame). */
+void zs_mono_begin(zs_renderer *r);
+/* Dithers row y (g: GRAY8, or 0/1 line flags with ZS_MONO_LINES; g is
+ * overwritten) and packs it into out: the row's page for ZS_FMT_MONO_PAGE
+ * (only bit y % 8 of each byte changes), the row for ZS_FMT_MONO_MSB. */
+void zs_mono_row(zs_renderer *r, int y, uint8_t *g, uint8_t *out);
+
+/* lines.c: the normals of the frame's records (first row of a frame). */
+void zs_lines_begin(zs_renderer *r);
+/* Edge flags (0/1) of the row just rendered into line_ids[0], from it and
+ * the row above (when line_prev_row); then the two id lines swap. */
+void zs_lines_row(zs_renderer *r, int y, uint8_t *flags);
+
+#endif

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Vector hidden lines (see zs_hlines.h). */
 #include "zs_hlines.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Vector hidden-line drawing on the host (double precision): the visible
  * parts of a scene's feature edges as screen-space segments, for

@@ -82,13 +82,14 @@ int zs_panel_supports(const zs_panel_desc *desc, zs_format format)
     return desc != NULL && (unsigned)format < 16u && (desc->formats & (1u << (unsigned)format));
 }
 
-size_t zs_panel_window_bytes(zs_format format, unsigned w, unsigned h)
+uint32_t zs_panel_window_bytes(zs_format format, unsigned w, unsigned h)
 {
+    /* 32 bits: a 240x240 window is 115,200 bytes, past a 16-bit size_t (AVR) */
     if (format == ZS_FMT_MONO_PAGE)
-        return (size_t)w * ((h + 7u) / 8u);
+        return (uint32_t)w * ((h + 7u) / 8u);
     if (format == ZS_FMT_MONO_MSB)
-        return (size_t)((w + 7u) / 8u) * h;
-    return (size_t)w * h * (format == ZS_FMT_RGB666 ? 3u : 2u);
+        return (uint32_t)((w + 7u) / 8u) * h;
+    return (uint32_t)w * h * (format == ZS_FMT_RGB666 ? 3u : 2u);
 }
 
 unsigned zs_panel_bytes_per_pixel(const zs_panel_desc *desc, zs_format format)
@@ -291,7 +292,7 @@ zs_panel_status zs_panel_window(zs_panel *p, uint16_t x0, uint16_t y0, uint16_t 
     p->window_bytes = 0;
     if ((s = p->desc->ops->window(p, xs, ys, xe, ye)) != ZS_PANEL_OK)
         return s;
-    p->window_total = (uint32_t)zs_panel_window_bytes(p->format, (unsigned)(x1 - x0),
+    p->window_total = zs_panel_window_bytes(p->format, (unsigned)(x1 - x0),
                                                       (unsigned)(y1 - y0));
     p->window_bytes = p->window_total;
     return ZS_PANEL_OK;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Monochrome OLED drivers: Solomon SSD1306 and Sino Wealth SH1106, the
  * zs_panel_ops_ssd1306 and zs_panel_ops_sh1106 tables (ZS_FMT_MONO_PAGE).
  *

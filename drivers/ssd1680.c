@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* E-paper driver: Solomon SSD1680 (250x122 class), the zs_panel_ops_ssd1680
  * table (ZS_FMT_MONO_MSB: bit 1 = white, as zspan's 1 = light).
  *

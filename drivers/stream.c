@@ -40,7 +40,7 @@ zs_panel_status zs_panel_stream(zs_panel *p, zs_renderer *r, uint8_t *buf0, uint
     if ((s = frame_fits(p, r)) != ZS_PANEL_OK)
         return s;
     /* a buffer row: one row of pixels, or one page of 8 rows */
-    stride = zs_panel_window_bytes(p->format, p->width, 1);
+    stride = (size_t)zs_panel_window_bytes(p->format, p->width, 1); /* one row: small */
     if (stride == 0 || buf_bytes < stride || band_rows < 1)
         return ZS_PANEL_ERR_BUFFER;
     fit = buf_bytes / stride;

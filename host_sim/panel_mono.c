@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan-sim panel on a monochrome panel (SSD1306, SH1106, SSD1680): the demo
  * scene in 1 bit through the panel driver into the emulated controller

@@ -44,10 +44,10 @@ $(AVR_BUILD)/core/%.o: src/%.c | deps
 # The scene sees bench/; the adapter bench/ and the port; the port itself only its directory.
 $(AVR_BUILD)/app/bench/%.o: bench/%.c bench/small_port.h $(AVR_PORT)/avr_port.h | deps
 	@mkdir -p $(@D)
-	$(AVR_CC) $(AVR_CFLAGS) $(SMALL_DEFS) '-DSMALL_BOARD="avr"' -Ibench -I$(AVR_PORT) -c $< -o $@
+	$(AVR_CC) $(AVR_CFLAGS) $(SMALL_DEFS) '-DSMALL_BOARD="avr"' -Ibench -I$(AVR_PORT) -MMD -MP -c $< -o $@
 $(AVR_BUILD)/app/$(AVR_PORT)/%.o: $(AVR_PORT)/%.c $(AVR_PORT)/avr_port.h | deps
 	@mkdir -p $(@D)
-	$(AVR_CC) $(AVR_CFLAGS) -I$(AVR_PORT) -c $< -o $@
+	$(AVR_CC) $(AVR_CFLAGS) -I$(AVR_PORT) -MMD -MP -c $< -o $@
 $(AVR_ELF): $(AVR_APP_OBJS) $(AVR_CORE_OBJS)
 	$(AVR_CC) -mmcu=$(AVR_MCU) -Wl,--gc-sections -o $@ $^
 	@$(AVR_SIZE) $@

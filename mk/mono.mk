@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # mk/mono.mk: the monochrome panels in `make demo`: the demo scene on an
 # emulated SSD1306 (filled with ordered dithering, and as a hidden-line
 # drawing) and on an emulated SSD1680 e-paper.

@@ -66,17 +66,17 @@ $(PORTALS_BENCH_GEN:.c=.h): $(PORTALS_BENCH_GEN) ;
 $(FW_BUILD)/m4/portals/bench_portals_fw.o: bench/bench_portals_fw.c $(PORTALS_BENCH_GEN:.c=.h) \
                                            $(PORT_HDRS) include/zspan/portal.h | deps
 	@mkdir -p $(@D)
-	$(ARM_CC) $(FW_M4_CPU) -O2 $(FW_COMMON) -I$(PORTALS_BENCH_DIR) -c $< -o $@
+	$(ARM_CC) $(FW_M4_CPU) -O2 $(FW_COMMON) -I$(PORTALS_BENCH_DIR) -MMD -MP -c $< -o $@
 $(FW_BUILD)/m4/portals/bench_level.o: $(PORTALS_BENCH_GEN) include/zspan/portal.h | deps
 	@mkdir -p $(@D)
-	$(ARM_CC) $(FW_M4_CPU) -O2 $(FW_COMMON) -c $< -o $@
+	$(ARM_CC) $(FW_M4_CPU) -O2 $(FW_COMMON) -MMD -MP -c $< -o $@
 $(FW_BUILD)/m0/portals/bench_portals_fw.o: bench/bench_portals_fw.c $(PORTALS_BENCH_GEN:.c=.h) \
                                            $(PORT_HDRS) include/zspan/portal.h | deps
 	@mkdir -p $(@D)
-	$(ARM_CC) $(FW_M0_CPU) -Os $(FW_COMMON) -I$(PORTALS_BENCH_DIR) -c $< -o $@
+	$(ARM_CC) $(FW_M0_CPU) -Os $(FW_COMMON) -I$(PORTALS_BENCH_DIR) -MMD -MP -c $< -o $@
 $(FW_BUILD)/m0/portals/bench_level.o: $(PORTALS_BENCH_GEN) include/zspan/portal.h | deps
 	@mkdir -p $(@D)
-	$(ARM_CC) $(FW_M0_CPU) -Os $(FW_COMMON) -c $< -o $@
+	$(ARM_CC) $(FW_M0_CPU) -Os $(FW_COMMON) -MMD -MP -c $< -o $@
 $(PORTALS_FW_M0): $(PORTALS_FW_M0_OBJS) $(FW_CORE_M0_OBJS) $(PORT_DIR)/ld/mps2-an386.ld \
                   $(PORT_DIR)/ld/sections.ld
 	$(ARM_CC) $(FW_M0_CPU) -mthumb $(FW_LDFLAGS) -T $(PORT_DIR)/ld/mps2-an386.ld \

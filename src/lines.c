@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Hidden-line drawing from the visibility the span walk computes: each row
  * is rendered as triangle ids, and a pixel is on an edge where its id differs
  * from the pixel on its left or above, unless the two triangles are smooth

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* 1-bit output: a row rendered in GRAY8 (or line flags) is dithered to one
  * bit per pixel and packed into the caller's buffer, in SSD1306 pages or
  * row-major MSB first. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Internal: the 1-bit output and hidden-line stages (mono.c, lines.c),
  * driven by renderer.c. */
 #ifndef ZSPAN_MONO_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Emulated SSD1306, SH1106 and SSD1680 controllers (see emu_mono.h). */
 #include "emu_mono.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Emulated monochrome controllers: SSD1306 and SH1106 OLEDs (1-bit pages),
  * SSD1680 e-paper (1-bit rows, two RAMs, refresh sequences). Fed with the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The zs_bus port of the emulated monochrome controllers (emu_mono.h):
  * 4-wire SPI or I2C framing, with the wire clocks counted. */
 #include <string.h>

@@ -354,7 +354,7 @@ unsigned zs_panel_bytes_per_pixel(const zs_panel_desc *desc, zs_format format);
 int zs_panel_supports(const zs_panel_desc *desc, zs_format format);
 /* Bytes a w x h window takes in `format`: w * h * bytes per pixel, w per
  * page of 8 rows (ZS_FMT_MONO_PAGE), (w + 7) / 8 per row (ZS_FMT_MONO_MSB). */
-size_t zs_panel_window_bytes(zs_format format, unsigned w, unsigned h);
+uint32_t zs_panel_window_bytes(zs_format format, unsigned w, unsigned h);
 
 /* MADCTL (DCS) for a rotation, with the module's mirror and BGR bits. */
 uint8_t zs_panel_madctl_for(const zs_panel_desc *desc, unsigned rotation);

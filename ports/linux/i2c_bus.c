@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* zspan Linux port over I2C (i2c-dev), see zs_linux_i2c.h. */
 #define _GNU_SOURCE
 #include "zs_linux_i2c.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan Linux port over I2C: a zs_bus on /dev/i2c-N (the i2c-dev driver) for
  * SSD1306 / SH1106 modules. Commands go as one I2C_RDWR write message each,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * zspan-i2c: the demo scene in 1 bit on an SSD1306 / SH1106 module on a
  * Linux I2C bus (/dev/i2c-N, e.g. a Raspberry Pi's pins 3 and 5), filled

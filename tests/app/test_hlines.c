@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_hlines: the vector hidden-line drawing of app/zs_hlines.c (zspan-sim
  * render --svg-lines) against dense sampling with a ray caster.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* LIBS: -lassimp */
 /*
  * test_lines: hidden-line drawing (ZS_MONO_LINES) against an oracle that

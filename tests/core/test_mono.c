@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_mono: the 1-bit formats (ZS_FMT_MONO_PAGE, ZS_FMT_MONO_MSB).
  *

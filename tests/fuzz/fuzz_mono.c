@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fuzz_mono: the emulated monochrome controllers (host_sim/emu/emu_mono.c:
  * SSD1306, SH1106, SSD1680) decoding arbitrary wire streams (libFuzzer).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_panel_mono: the monochrome panels (SSD1306 128x64 and 128x32, SH1106
  * 132x64, SSD1680 122x250) through their drivers into the emulated

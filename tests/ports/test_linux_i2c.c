@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The Linux I2C port (ports/linux/i2c_bus.c) through the real i2c-dev
  * interface: open(), ioctl(I2C_SLAVE) and ioctl(I2C_RDWR) on /dev/i2c-1 as

@@ -33,15 +33,20 @@ static void edge_init(zs_edge *e, const zs_vert *a, const zs_vert *b, int32_t y)
         x = q0 + (int32_t)q;
         err = (int32_t)(q * den - m);
     }
-    step = (16 * dx) / den;
-    if (step * den > 16 * dx)
-        step--; /* floor */
     e->x = x;
     e->err = err;
-    e->step = step;
-    e->rstep = 16 * dx - step * den;
     e->den = den;
     e->y_end = (int16_t)zs_first_row(b->y);
+    if (e->y_end > y + 1) {
+        step = (16 * dx) / den;
+        if (step * den > 16 * dx)
+            step--; /* floor */
+        e->step = step;
+        e->rstep = 16 * dx - step * den;
+    } else { /* covers one row: never stepped (a division saved, a helper call on M0) */
+        e->step = 0;
+        e->rstep = 0;
+    }
 }
 
 /* Depth planes hold window depth in Q40 (10 bits below the vertices' Q30, so

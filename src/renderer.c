@@ -288,12 +288,18 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
     if (rows < 1 || y0 < r->priv.next_row || y0 >= (int)r->cfg.height ||
         rows > (int)r->cfg.height - y0)
         return ZS_ERR_ROW;
-    mono = zs_format_is_mono((zs_format)r->priv.out_format);
-    need = zs_format_stride((zs_format)r->priv.out_format, r->cfg.width);
-    /* rows of the buffer: pages for the page layout */
-    units = r->priv.out_format == ZS_FMT_MONO_PAGE
-                ? (size_t)((y0 + rows - 1) / 8 - y0 / 8 + 1)
-                : (size_t)rows;
+    /* byte formats first: the common call costs no more than before */
+    mono = r->priv.out_format >= (uint8_t)ZS_FMT_COUNT;
+    if (!mono) {
+        need = (size_t)r->cfg.width * r->priv.bpp;
+        units = (size_t)rows;
+    } else {
+        need = zs_format_stride((zs_format)r->priv.out_format, r->cfg.width);
+        /* rows of the buffer: pages for the page layout */
+        units = r->priv.out_format == ZS_FMT_MONO_PAGE
+                    ? (size_t)((y0 + rows - 1) / 8 - y0 / 8 + 1)
+                    : (size_t)rows;
+    }
     if (stride < need ||
         (units > 1 && /* no division for one row (a helper call on Cortex-M0) */
          stride > (SIZE_MAX - need) / units))
@@ -313,10 +319,13 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
         zs_raster_row(r, y, 0);
         r->priv.line_prev_row = 0; /* no ids of the row above */
     }
-    for (y = y0; y < y0 + rows; y++) {
-        if (!mono)
+    if (!mono) {
+        for (y = y0; y < y0 + rows; y++)
             zs_raster_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
-        else if (r->priv.out_format == ZS_FMT_MONO_PAGE)
+        y = y0 + rows;
+    }
+    for (y = mono ? y0 : y0 + rows; y < y0 + rows; y++) {
+        if (r->priv.out_format == ZS_FMT_MONO_PAGE)
             mono_row(r, y, (uint8_t *)buf + (size_t)(y / 8 - y0 / 8) * stride);
         else
             mono_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);

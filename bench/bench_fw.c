@@ -9,7 +9,8 @@
  *   M BOARD static_ram=N stack_used=N stack_size=N
  *
  * Command line (qemu -semihosting-config arg=...): "quick" renders frame 0 of
- * the first scene in both modes (the firmware test of make test); "rows"
+ * the first scene in both modes and in the three 1-bit outputs of
+ * bench_mono_frame (the firmware test of make test); "rows"
  * forces the per-row timing below even when a framebuffer fits.
  *
  * Instructions are counted from SysTick ticks * the calibrated instructions
@@ -162,6 +163,36 @@ int main(void)
                           (unsigned long)sum,
                           (unsigned long)(stt->tris_dropped + stt->verts_dropped +
                                           stt->records_skipped));
+            }
+        }
+    }
+    if (quick) { /* the 1-bit outputs of frame 0 (host == M4 == M0) */
+        const bench_scene *s = &bench_scenes[0];
+        zs_config cfg = bench_config(s);
+        size_t need;
+        int k;
+        cfg.flags |= ZS_CFG_MONO | ZS_CFG_LINES;
+        need = zs_arena_bytes(&cfg);
+        if (need > free_bytes || zs_init(&r, free_ram, need, &cfg) != ZS_OK) {
+            sh_printf("E %s %s mono init\n", board, s->name);
+            errors++;
+        } else {
+            for (k = 0; k < BENCH_MONO_VARIANTS; k++) {
+                uint32_t sum = 0;
+                uint64_t a = port_ticks(), b;
+                zs_status st = bench_mono_frame(&r, &cam, s, k, &sum);
+                b = port_ticks();
+                if (st != ZS_OK) {
+                    sh_printf("E %s %s %s 0 %s\n", board, s->name, bench_mono_names[k],
+                              zs_strerror(st));
+                    errors++;
+                    continue;
+                }
+                sh_printf("R %s %s %s 0 instr=%lu sum=%08lx dropped=%lu\n", board, s->name,
+                          bench_mono_names[k], (unsigned long)((b - a) * ipt / 1000u),
+                          (unsigned long)sum,
+                          (unsigned long)(r.stats.tris_dropped + r.stats.verts_dropped +
+                                          r.stats.records_skipped));
             }
         }
     }

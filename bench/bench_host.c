@@ -131,7 +131,7 @@ static uint16_t grow(uint32_t v)
 int main(int argc, char **argv)
 {
     const char *only = NULL, *ppm = NULL;
-    int frames = BENCH_FRAMES, modes = 3, caps = 0, i, si, failures = 0;
+    int frames = BENCH_FRAMES, modes = 3, caps = 0, mono = 0, i, si, failures = 0;
     zs_camera cam;
     uint16_t tight[BENCH_SCENE_COUNT][3];
     if (argc == 5 && !strcmp(argv[1], "arena")) {
@@ -145,7 +145,7 @@ int main(int argc, char **argv)
     }
     if (argc < 2 || (strcmp(argv[1], "run") && strcmp(argv[1], "caps"))) {
         fprintf(stderr, "usage: bench_host run|caps [--scene NAME] [--mode span|zline|both] "
-                        "[--frames N] [--ppm DIR]\n"
+                        "[--frames N] [--ppm DIR] [--mono]\n"
                         "       bench_host arena TRIANGLES VERTICES EDGES\n");
         return 2;
     }
@@ -160,6 +160,8 @@ int main(int argc, char **argv)
             frames = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--ppm") && i + 1 < argc)
             ppm = argv[++i];
+        else if (!strcmp(argv[i], "--mono"))
+            mono = 1;
         else {
             fprintf(stderr, "bench_host: unknown argument '%s'\n", argv[i]);
             return 2;
@@ -189,6 +191,31 @@ int main(int argc, char **argv)
             if (render_scene(s, &cfg, &cam, modes, frames, 1, ppm, &use) != 0)
                 return 1;
             failures += use.frames_dropping;
+            if (mono) { /* the firmware test's 1-bit frames (bench_mono_frame) */
+                static zs_renderer mr;
+                static uint8_t marena[64 * 1024];
+                zs_config mc = cfg;
+                int k;
+                mc.flags |= ZS_CFG_MONO | ZS_CFG_LINES;
+                if (zs_arena_bytes(&mc) > sizeof marena ||
+                    zs_init(&mr, marena, sizeof marena, &mc) != ZS_OK) {
+                    fprintf(stderr, "bench_host: mono init failed\n");
+                    return 1;
+                }
+                for (k = 0; k < BENCH_MONO_VARIANTS; k++) {
+                    uint32_t sum = 0;
+                    zs_status st = bench_mono_frame(&mr, &cam, s, k, &sum);
+                    if (st != ZS_OK) {
+                        fprintf(stderr, "bench_host: %s %s: %s\n", s->name, bench_mono_names[k],
+                                zs_strerror(st));
+                        return 1;
+                    }
+                    printf("R host %s %s 0 sum=%08lx dropped=%lu\n", s->name, bench_mono_names[k],
+                           (unsigned long)sum,
+                           (unsigned long)(mr.stats.tris_dropped + mr.stats.verts_dropped +
+                                           mr.stats.records_skipped));
+                }
+            }
             continue;
         }
         /* caps: the pool use with generous pools, then grow each pool that

@@ -61,6 +61,32 @@ zs_status bench_submit(zs_renderer *r, const zs_camera *cam, const bench_scene *
     return zs_draw(r, s->mesh, &mv);
 }
 
+const char *const bench_mono_names[BENCH_MONO_VARIANTS] = {"mono-bayer", "mono-diffuse",
+                                                            "mono-lines"};
+
+zs_status bench_mono_frame(zs_renderer *r, const zs_camera *cam, const bench_scene *s, int k,
+                           uint32_t *sum)
+{
+    static uint8_t page[BENCH_W]; /* one page of 8 rows, or one row of bits */
+    zs_mat34 mv = bench_model_view(s, 0);
+    zs_shade_params sp = zs_shade_default();
+    zs_status st = zs_frame_begin(r, cam, ZS_MODE_SPAN);
+    int y;
+    if (st != ZS_OK)
+        return st;
+    sp.format = k == 0 ? ZS_FMT_MONO_MSB : ZS_FMT_MONO_PAGE;
+    sp.mono = (uint8_t)(k == 1 ? ZS_MONO_DIFFUSE : k == 2 ? ZS_MONO_LINES : 0u);
+    if ((st = zs_frame_shading(r, &sp)) != ZS_OK || (st = zs_draw(r, s->mesh, &mv)) != ZS_OK)
+        return st;
+    *sum = BENCH_FNV_BASIS;
+    for (y = 0; st == ZS_OK && y < BENCH_H; y += k == 0 ? 1 : 8) {
+        size_t n = k == 0 ? BENCH_W / 8 : BENCH_W;
+        st = zs_render_rows(r, y, k == 0 ? 1 : 8, page, n);
+        *sum = bench_fnv1a(*sum, page, n);
+    }
+    return st;
+}
+
 uint32_t bench_fnv1a(uint32_t h, const uint8_t *p, size_t n)
 {
     size_t i;

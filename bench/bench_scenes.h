@@ -45,6 +45,15 @@ zs_status bench_camera(zs_camera *cam);
 /* zs_frame_begin + zs_draw for frame f (the caller renders the rows). */
 zs_status bench_submit(zs_renderer *r, const zs_camera *cam, const bench_scene *s, int frame,
                        zs_visibility mode);
+/* The 1-bit outputs in the host == M4 == M0 checksum test (frame 0 of a
+ * scene, span mode): 0 "mono-bayer" (ZS_FMT_MONO_MSB rows, ordered dither),
+ * 1 "mono-diffuse" (ZS_FMT_MONO_PAGE pages, error diffusion), 2 "mono-lines"
+ * (pages, hidden lines). The renderer needs ZS_CFG_MONO | ZS_CFG_LINES. The
+ * checksum is FNV-1a 32 over the rows (MSB) or pages in order. */
+#define BENCH_MONO_VARIANTS 3
+extern const char *const bench_mono_names[BENCH_MONO_VARIANTS];
+zs_status bench_mono_frame(zs_renderer *r, const zs_camera *cam, const bench_scene *s, int k,
+                           uint32_t *sum);
 /* FNV-1a 32 of n bytes, continuing from h. */
 uint32_t bench_fnv1a(uint32_t h, const uint8_t *p, size_t n);
 

@@ -1,8 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * Firmware test: frame 0 of the sphere285 benchmark scene, both visibility
- * modes, on the Cortex-M4 (QEMU mps2-an386) and Cortex-M0 (QEMU microbit,
- * 16 KB RAM) images; the frame checksums must equal the host's. Also checks
+ * modes and the three 1-bit outputs (ordered dither, error diffusion, hidden
+ * lines: bench_mono_frame), on the Cortex-M4 (QEMU mps2-an386) and Cortex-M0
+ * (QEMU microbit, 16 KB RAM) images; the frame checksums must equal the
+ * host's. Also checks
  * the SysTick calibration under -icount shift=0 and that no pool overflowed.
  * Takes well under a second per machine.
  */
@@ -88,22 +90,29 @@ static int find_sum(const char *text, const char *board, const char *mode, unsig
     return 1;
 }
 
-static unsigned long host_sum[2];
+/* span, zline, then the 1-bit outputs of bench_mono_frame */
+#define N_OUTPUTS 5
+static const char *const outputs[N_OUTPUTS] = {"span", "zline", "mono-bayer", "mono-diffuse",
+                                               "mono-lines"};
+static unsigned long host_sum[N_OUTPUTS];
 
 static int host_setup(void **state)
 {
     static output o;
     unsigned long instr, dropped;
     (void)state;
-    run(&o, BENCH_HOST " run --scene sphere285 --frames 1 2>&1");
+    run(&o, BENCH_HOST " run --scene sphere285 --frames 1 --mono 2>&1");
     if (o.status != 0) {
         fprintf(stderr, "bench_host failed (%d):\n%s\n", o.status, o.text);
         return -1;
     }
-    if (!find_sum(o.text, "host", "span", &host_sum[0], &instr, &dropped) ||
-        !find_sum(o.text, "host", "zline", &host_sum[1], &instr, &dropped)) {
-        fprintf(stderr, "no host checksums in:\n%s\n", o.text);
-        return -1;
+    {
+        int m;
+        for (m = 0; m < N_OUTPUTS; m++)
+            if (!find_sum(o.text, "host", outputs[m], &host_sum[m], &instr, &dropped)) {
+                fprintf(stderr, "no host %s checksum in:\n%s\n", outputs[m], o.text);
+                return -1;
+            }
     }
     return 0;
 }
@@ -113,7 +122,6 @@ static void check_machine(const char *machine, const char *elf, const char *boar
 {
     static output o;
     char cmd[1024];
-    const char *modes[2] = {"span", "zline"};
     const char *info;
     int m;
     snprintf(cmd, sizeof cmd,
@@ -130,12 +138,12 @@ static void check_machine(const char *machine, const char *elf, const char *boar
         /* -icount shift=0: 1 instruction per ns; SysTick counts the CPU clock */
         assert_true(ipt + 10 >= nominal_ipt_milli && ipt <= nominal_ipt_milli + 10);
     }
-    for (m = 0; m < 2; m++) {
+    for (m = 0; m < N_OUTPUTS; m++) {
         unsigned long sum, instr, dropped;
-        if (!find_sum(o.text, board, modes[m], &sum, &instr, &dropped))
-            fail_msg("%s: no %s result", machine, modes[m]);
+        if (!find_sum(o.text, board, outputs[m], &sum, &instr, &dropped))
+            fail_msg("%s: no %s result", machine, outputs[m]);
         if (sum != host_sum[m])
-            fail_msg("%s %s: checksum %08lx, host %08lx", machine, modes[m], sum, host_sum[m]);
+            fail_msg("%s %s: checksum %08lx, host %08lx", machine, outputs[m], sum, host_sum[m]);
         assert_int_equal(dropped, 0);
         assert_true(instr > 1000);
     }

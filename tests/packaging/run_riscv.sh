@@ -33,7 +33,7 @@ if [ "$what" = bench ]; then
 fi
 
 if [ "$what" = quick ]; then
-    "$BENCH_HOST" run --scene sphere285 --mode both --frames 1 > "$work/host.txt" || fail "bench_host"
+    "$BENCH_HOST" run --scene sphere285 --mode both --frames 1 --mono > "$work/host.txt" || fail "bench_host"
 else
     "$BENCH_HOST" run --mode both > "$work/host.txt" || fail "bench_host"
 fi

@@ -223,7 +223,7 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     sort_canonical(r, t, s);
     /* twice the area in canonical order; its sign says which side of the
      * long edge top -> bottom the middle vertex lies on */
-    cross = zs_area2(s[0], s[1], s[2]);
+    cross = zs_area2_inline(s[0], s[1], s[2]);
     long_left = cross > 0; /* middle vertex to the right: the long edge leads */
     a->tri = ti;
     a->inside = 0;

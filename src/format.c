@@ -75,7 +75,7 @@ uint32_t zs_pixel_word(zs_format fmt, uint32_t rgb)
         uint8_t b[4];
     } u;
     zs_pack_pixel(fmt, rgb, u.b);
-    if (zs_format_bytes(fmt) == 2) {
+    if (fmt == ZS_FMT_RGB565_BE || fmt == ZS_FMT_RGB565 || fmt == ZS_FMT_ID16) { /* 2 bytes */
         u.b[2] = u.b[0];
         u.b[3] = u.b[1];
     }

@@ -102,18 +102,25 @@ static inline int64_t mul_32x16(int32_t m, int32_t p)
 /* Model-space vertex i to clip space (Q16.16, not saturated: clip
  * coordinates may pass 2^31 where a narrow field of view or a far vertex
  * magnifies eye coordinates; outcodes and the clipper take them whole). */
+/* The fast path's clip coordinates of an int16 position (also the bounding
+ * box's corners, so both round alike): 32x16-bit products in 64 bits. */
+static inline void fast_clip(const draw_ctx *c, int32_t px, int32_t py, int32_t pz,
+                             int64_t *xc, int64_t *yc, int64_t *w)
+{
+    const int32_t *m0 = c->clip[0], *m1 = c->clip[1], *m2 = c->clip[2];
+    int64_t sx = mul_32x16(m0[0], px) + mul_32x16(m0[1], py) + mul_32x16(m0[2], pz) + 32768;
+    int64_t sy = mul_32x16(m1[0], px) + mul_32x16(m1[1], py) + mul_32x16(m1[2], pz) + 32768;
+    int64_t sw = mul_32x16(m2[0], px) + mul_32x16(m2[1], py) + mul_32x16(m2[2], pz) + 32768;
+    *xc = zs_asr64(sx, 16) + c->clip_t[0];
+    *yc = zs_asr64(sy, 16) + c->clip_t[1];
+    *w = zs_asr64(sw, 16) + c->clip_t[2];
+}
+
 static void to_clip(const draw_ctx *c, uint32_t i, int64_t *xc, int64_t *yc, int64_t *w)
 {
-    if (c->fast) { /* 32x16-bit products accumulated in 64 bits */
+    if (c->fast) {
         const int16_t *pos = c->mesh->positions + 3u * i;
-        int32_t px = pos[0], py = pos[1], pz = pos[2];
-        const int32_t *m0 = c->clip[0], *m1 = c->clip[1], *m2 = c->clip[2];
-        int64_t sx = mul_32x16(m0[0], px) + mul_32x16(m0[1], py) + mul_32x16(m0[2], pz) + 32768;
-        int64_t sy = mul_32x16(m1[0], px) + mul_32x16(m1[1], py) + mul_32x16(m1[2], pz) + 32768;
-        int64_t sw = mul_32x16(m2[0], px) + mul_32x16(m2[1], py) + mul_32x16(m2[2], pz) + 32768;
-        *xc = zs_asr64(sx, 16) + c->clip_t[0];
-        *yc = zs_asr64(sy, 16) + c->clip_t[1];
-        *w = zs_asr64(sw, 16) + c->clip_t[2];
+        fast_clip(c, pos[0], pos[1], pos[2], xc, yc, w);
     } else { /* general path: model coordinates saturate (counted) */
         zs_renderer *r = c->r;
         const int16_t *pos = c->mesh->positions + 3u * i;
@@ -258,7 +265,6 @@ static ZS_NOINLINE int box_inside(const draw_ctx *c, uint32_t n)
 {
     const zs_renderer *r = c->r;
     const int16_t *p = c->mesh->positions, *end = p + 3u * n;
-    int32_t lo[3], hi[3];
     int32_t lx, ly, lz, hx, hy, hz; /* scalars: the scan stays in registers */
     int k;
     if (!c->fast || n == 0)
@@ -275,28 +281,13 @@ static ZS_NOINLINE int box_inside(const draw_ctx *c, uint32_t n)
         lz = z < lz ? z : lz;
         hz = z > hz ? z : hz;
     }
-    lo[0] = lx;
-    lo[1] = ly;
-    lo[2] = lz;
-    hi[0] = hx;
-    hi[1] = hy;
-    hi[2] = hz;
     for (k = 0; k < 8; k++) {
-        int32_t p[3];
-        int64_t s[3], gw;
-        int j;
-        p[0] = (k & 1) ? hi[0] : lo[0];
-        p[1] = (k & 2) ? hi[1] : lo[1];
-        p[2] = (k & 4) ? hi[2] : lo[2];
-        for (j = 0; j < 3; j++) /* the fast path of to_clip */
-            s[j] = zs_asr64((int64_t)c->clip[j][0] * p[0] + (int64_t)c->clip[j][1] * p[1] +
-                                (int64_t)c->clip[j][2] * p[2] + 32768,
-                            16) +
-                   c->clip_t[j];
-        if (s[2] < r->cam.near_z || s[2] > r->cam.far_z)
+        int64_t xc, yc, w, gw;
+        fast_clip(c, (k & 1) ? hx : lx, (k & 2) ? hy : ly, (k & 4) ? hz : lz, &xc, &yc, &w);
+        if (w < r->cam.near_z || w > r->cam.far_z)
             return 0;
-        gw = r->priv.guard * s[2] - INSIDE_MARGIN;
-        if (s[0] < -gw || s[0] > gw || s[1] < -gw || s[1] > gw)
+        gw = r->priv.guard * w - INSIDE_MARGIN;
+        if (xc < -gw || xc > gw || yc < -gw || yc > gw)
             return 0;
     }
     return 1;
@@ -336,13 +327,18 @@ static int merge_outcome(int have, int piece)
 
 static void count_outcome(zs_stats *s, int outcome)
 {
-    switch (outcome) {
-    case ZS_SETUP_STORED: s->tris_stored++; break;
-    case ZS_SETUP_CULLED: s->tris_culled++; break;
-    case ZS_SETUP_EMPTY: s->tris_empty++; break;
-    case ZS_SETUP_DROPPED: s->tris_dropped++; break;
-    default: s->tris_rejected++; break;
-    }
+    /* tests, not a switch: the common outcome first, no case table (a helper
+     * call on Cortex-M0 at -Os) */
+    if (outcome == ZS_SETUP_STORED)
+        s->tris_stored++;
+    else if (outcome == ZS_SETUP_CULLED)
+        s->tris_culled++;
+    else if (outcome == ZS_SETUP_EMPTY)
+        s->tris_empty++;
+    else if (outcome == ZS_SETUP_DROPPED)
+        s->tris_dropped++;
+    else
+        s->tris_rejected++;
 }
 
 /* The tag of triangle t of a draw that starts at frame count tag0: 1..65535

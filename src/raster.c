@@ -73,29 +73,31 @@ static int fold_edge(zs_renderer *r, zs_edge *keep, uint16_t keep_i, zs_edge *du
  * the edges): cheaper than comparison sorts past a dozen or so. Edges off either side keep their batch order
  * among themselves: the walk treats them as at column 0 or at the width, and
  * the next step's insertion pass puts them back in order of their true
- * columns. Counts and output use the sort keys' scratch (8 bytes a column):
- * 2 * (width + 2) + 2 * n bytes for n <= width. */
+ * columns. Counts, output and columns use the sort keys' scratch (8 bytes a
+ * column): 2 * (width + 2) + 4 * n bytes for n <= width. */
 static void count_sort(zs_renderer *r, uint16_t *a, int n)
 {
     const zs_edge *edges = r->priv.edges;
     const int32_t w = (int32_t)r->cfg.width;
     uint16_t *count = (uint16_t *)(void *)r->priv.sort_keys, *out = count + w + 2;
+    uint16_t *col = out + n; /* each edge's clamped column, read once */
     int32_t c, lo = w, hi = 0, span;
     int i;
-    /* count over the columns the batch spans only (a small model is narrow) */
     for (i = 0; i < n; i++) {
         int32_t x = zs_clampi(edges[a[i]].x, 0, w);
+        col[i] = (uint16_t)x;
         lo = x < lo ? x : lo;
         hi = x > hi ? x : hi;
     }
+    /* count over the columns the batch spans only (a small model is narrow) */
     span = hi - lo + 1;
     memset(count, 0, (size_t)(span + 1) * sizeof *count);
     for (i = 0; i < n; i++)
-        count[zs_clampi(edges[a[i]].x, 0, w) - lo + 1]++;
+        count[col[i] - lo + 1]++;
     for (c = 1; c < span; c++)
         count[c] = (uint16_t)(count[c] + count[c - 1]);
     for (i = 0; i < n; i++)
-        out[count[zs_clampi(edges[a[i]].x, 0, w) - lo]++] = a[i];
+        out[count[col[i] - lo]++] = a[i];
     memcpy(a, out, (size_t)n * sizeof *a);
 }
 

@@ -319,13 +319,10 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
         zs_raster_row(r, y, 0);
         r->priv.line_prev_row = 0; /* no ids of the row above */
     }
-    if (!mono) {
-        for (y = y0; y < y0 + rows; y++)
+    for (y = y0; y < y0 + rows; y++) {
+        if (!mono)
             zs_raster_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
-        y = y0 + rows;
-    }
-    for (y = mono ? y0 : y0 + rows; y < y0 + rows; y++) {
-        if (r->priv.out_format == ZS_FMT_MONO_PAGE)
+        else if (r->priv.out_format == ZS_FMT_MONO_PAGE) /* a page holds 8 rows */
             mono_row(r, y, (uint8_t *)buf + (size_t)(y / 8 - y0 / 8) * stride);
         else
             mono_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);

@@ -65,7 +65,7 @@ typedef struct zs_active {
     uint16_t right;        /* its right (trailing) edge */
     int16_t y0;            /* the row zrow and the colour planes refer to */
     uint8_t flags;         /* ZS_ACT_* */
-    int8_t inside;         /* in/out counter while walking a row */
+    uint8_t inside;        /* in/out counter while walking a row (mod 256) */
     uint16_t set_pos;      /* position in the in-polygon set */
     int16_t y_end;         /* first row below the triangle */
     int32_t cross;         /* span walk: column where it overtakes the top */

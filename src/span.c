@@ -25,8 +25,10 @@
  * store to a record). The out-of-line helpers below get what they need as
  * arguments and pass the nearest crossing back through r->priv.min_cross. */
 
-static int64_t depth_at(const zs_active *a, int32_t x, int32_t y)
+static int64_t depth_at(zs_renderer *r, zs_active *a, int32_t x, int32_t y)
 {
+    if (a->flags & ZS_ACT_LAZY)
+        zs_make_plane(r, a, y);
     return zs_row_depth(a, y) + zs_mul64_small(a->zdx, x);
 }
 
@@ -146,7 +148,7 @@ static ZS_NOINLINE zs_active *retop(const walk_ctx *w, int ns, int32_t x)
     }
     for (k = 0; k < ns; k++) {
         zs_active *a = &act[set[k]];
-        a->zcur = depth_at(a, x, y);
+        a->zcur = depth_at(r, a, x, y);
         if (!best || nearer(a->zcur, a, bz, best)) {
             best = a;
             bz = a->zcur;
@@ -199,10 +201,10 @@ static ZS_NOINLINE int32_t next_cross(const zs_renderer *r, int ns, const zs_act
 
 /* An entering triangle a at column x against the top (both in the set):
  * its crossing with the top, or 1 when it may be the new top (pick again). */
-static ZS_NOINLINE int enter_vs_top(const walk_ctx *w, zs_active *a, const zs_active *top,
+static ZS_NOINLINE int enter_vs_top(const walk_ctx *w, zs_active *a, zs_active *top,
                                     int32_t x)
 {
-    int64_t za = depth_at(a, x, w->y), zt = depth_at(top, x, w->y);
+    int64_t za = depth_at(w->r, a, x, w->y), zt = depth_at(w->r, top, x, w->y);
     w->r->stats.depth_evals += 2;
     if (nearer(za, a, zt, top))
         return 1;

@@ -84,6 +84,9 @@ typedef struct zs_active_color {
 #define ZS_ACT_GOURAUD 0x01u   /* colour varies across the triangle */
 #define ZS_ACT_LONG_LEFT 0x02u /* the long edge is its left edge */
 #define ZS_ACT_STEEP 0x04u     /* needle: zrow anchored exactly on every row */
+#define ZS_ACT_LAZY 0x08u      /* span mode: depth plane not made yet (most
+                                  triangles are decided by their depth range
+                                  and never need it); zs_make_plane makes it */
 
 /* Compile-time checks that the header's sizes match the records. */
 typedef char zs_check_vert[(sizeof(zs_vert) == ZS_VERTEX_BYTES) ? 1 : -1];
@@ -202,6 +205,9 @@ int zs_activate(zs_renderer *r, uint16_t tri, int32_t y);
  * centre of column xa on row y when the triangle covers it (xa: its first
  * covered column there, clamped to the screen; 0 <= y <= height). */
 void zs_anchor_depth(const zs_renderer *r, zs_active *a, int32_t xa, int32_t y);
+/* The depth plane of a ZS_ACT_LAZY triangle, as activation would have made
+ * it, during row y's walk (a steep one is anchored on row y like the rest). */
+void zs_make_plane(zs_renderer *r, zs_active *a, int32_t y);
 /* Appends the lower short edge of active triangle ai, starting at row y. */
 void zs_continue_edge(zs_renderer *r, uint16_t ai, int32_t y);
 /* raster.c: rows, edges, the active edge list */

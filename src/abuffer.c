@@ -425,9 +425,11 @@ static uint32_t to_channel(int64_t mean_q16)
     return v < 0 ? 0u : v > 255 ? 255u : (uint32_t)v;
 }
 
-/* Blends the transparent fragments covering sample (i, j) in front of depth
- * zop over colour acc (Q8.16), far to near. */
-static void blend_sample(zs_aa_pix *px, int n, int i, int j, int64_t zop, int32_t col[3])
+/* Blends the transparent fragments covering sample (i, j) in front of the
+ * opaque surface there (depth zop, record op_rec) over colour col (Q8.16),
+ * far to near. */
+static void blend_sample(zs_aa_pix *px, int n, int i, int j, int64_t zop, uint32_t op_rec,
+                         int32_t col[3])
 {
     int idx[ZS_ABUFFER_FRAGMENTS], m = 0, a, b, k;
     int64_t zs[ZS_ABUFFER_FRAGMENTS];
@@ -437,8 +439,8 @@ static void blend_sample(zs_aa_pix *px, int n, int i, int j, int64_t zop, int32_
         if (px[a].t->alpha == 255 || px[a].t->alpha == 0 || !(px[a].mask & bit))
             continue;
         z = sample_depth(&px[a], i, j);
-        if (z >= zop)
-            continue;
+        if (z > zop || (z == zop && px[a].t->rec >= op_rec))
+            continue; /* behind the opaque surface (an exact tie: the later record is) */
         /* sorted far to near; equal depths: the later record first (the
          * earlier one ends on top, as it would win the tie) */
         for (b = m; b > 0 && (zs[b - 1] < z || (zs[b - 1] == z && px[idx[b - 1]].t->rec < px[a].t->rec)); b--) {
@@ -568,7 +570,8 @@ static void resolve_pixel(zs_renderer *r, zs_aa_state *s, const uint16_t *across
                     for (k = 0; k < 3; k++)
                         col[k] = best >= 0 ? sample_channel(&px[best], k, i, j)
                                            : (int32_t)(((bg >> (16 - 8 * k)) & 255u) << 16);
-                    blend_sample(px, n, i, j, best >= 0 ? zb : INT64_MAX, col);
+                    blend_sample(px, n, i, j, best >= 0 ? zb : INT64_MAX,
+                                 best >= 0 ? px[best].t->rec : 0x10000u, col);
                     for (k = 0; k < 3; k++)
                         acc[k] += 16 * (int64_t)col[k];
                 }

@@ -309,6 +309,7 @@ static void check_scene(zt_ctx *c, const zs_camera *cam, zt_scene *sc, int goura
                                 depth_pt(&recs.v[i], 16.0 * x + 8, 16.0 * y + 8), recs.v[i].xy[0],
                                 recs.v[i].xy[1], recs.v[i].xy[2], recs.v[i].xy[3], recs.v[i].xy[4],
                                 recs.v[i].xy[5], sc->fcol[recs.v[i].tag - 1]);
+                    print_error("     alpha %.3f\n", rc[i].alpha);
                 }
         }
     free(rc);
@@ -390,6 +391,42 @@ static void test_random_gouraud(void **state)
         check_scene(&c, &cam, &sc, 1, ZS_AA_EDGES, 1, NULL, n, &as);
     }
     assert_quality("gouraud, edges", &as);
+    zt_scene_free(&sc);
+    zt_ctx_free(&c);
+}
+
+/* Transparency: the scene in 2..4 draws with random opacities (some opaque,
+ * some invisible); per sample the transparent hits in front of the nearest
+ * opaque one are blended far to near. Flat and Gouraud. */
+static void test_random_transparent(void **state)
+{
+    (void)state;
+    zt_rng g;
+    zt_rng_seed(&g, SEED + 4);
+    zt_ctx c;
+    ctx_init_aa(&c, W, H, 800, 2400, 600, ZS_CFG_ABUFFER);
+    zs_camera cam;
+    zt_camera_std(&cam, ZS_FX(1) / 2, ZS_FX(100));
+    zt_scene sc;
+    zt_scene_init(&sc, W, H, 128);
+    aa_stats as[2];
+    memset(as, 0, sizeof as);
+    for (int n = 0; n < NSCENES / 2; n++) {
+        int gouraud = n & 1;
+        zt_scene_reset(&sc);
+        unsigned flags = gouraud ? ZT_SC_PLAIN | ZT_SC_SHARED | ZT_SC_FLAT | ZT_SC_LAYERS
+                                 : ZT_SC_ALL;
+        zt_scene_random(&g, &sc, (int)zt_range(&g, 8, 24), flags, 0.5);
+        uint8_t alpha[4];
+        int parts = 2 + (int)zt_below(&g, 3);
+        for (int p = 0; p < parts; p++) {
+            unsigned k = zt_below(&g, 6);
+            alpha[p] = (uint8_t)(k == 0 ? 255 : k == 1 ? 0 : 30 + zt_below(&g, 200));
+        }
+        check_scene(&c, &cam, &sc, gouraud, ZS_AA_TRANSPARENT, parts, alpha, n, &as[gouraud]);
+    }
+    assert_quality("flat, transparent", &as[0]);
+    assert_quality("gouraud, transparent", &as[1]);
     zt_scene_free(&sc);
     zt_ctx_free(&c);
 }
@@ -666,6 +703,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_random_flat),
         cmocka_unit_test(test_random_gouraud),
+        cmocka_unit_test(test_random_transparent),
         cmocka_unit_test(test_tiling_no_seams),
         cmocka_unit_test(test_formats_and_off),
         cmocka_unit_test(test_api),

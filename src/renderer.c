@@ -25,7 +25,8 @@ static zs_status check_config(const zs_config *c)
     if (c->max_triangles == 0 || c->max_vertices == 0 || c->max_active_edges < 2 ||
         c->max_active_edges > ZS_MAX_ACTIVE_EDGES)
         return ZS_ERR_CAPACITY;
-    if (c->flags & ~(uint16_t)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES))
+    if (c->flags & ~(uint16_t)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES |
+                               ZS_CFG_TEXTURE))
         return ZS_ERR_ARGUMENT;
     return ZS_OK;
 }
@@ -47,6 +48,11 @@ static uint32_t arena_bytes32(const zs_config *c)
         ((c->flags & ZS_CFG_NO_ZLINE)
              ? 0u
              : ROUND8_32((uint32_t)c->width * 8u) + ROUND8_32((uint32_t)c->width * 2u)) +
+        ((c->flags & ZS_CFG_TEXTURE)
+             ? ROUND8_32((uint32_t)c->max_vertices * ZS_TEX_VERTEX_BYTES) +
+                   ROUND8_32(a * ZS_ACTIVE_TEX_BYTES) +
+                   ROUND8_32(ZS_MAX_FRAME_TEXTURES * (uint32_t)sizeof(void *))
+             : 0u) +
         ZS_ARENA_ALIGN;
     return n;
 }
@@ -142,6 +148,11 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
         r->priv.tri_normal = carve(&cur, (size_t)cfg->max_triangles * ZS_TRI_NORMAL_BYTES);
         r->priv.draw_starts = carve(&cur, ((size_t)cfg->max_triangles + 7u) / 8u);
     }
+    if (cfg->flags & ZS_CFG_TEXTURE) {
+        r->priv.tex_verts = carve(&cur, (size_t)cfg->max_vertices * sizeof(zs_tex_vert));
+        r->priv.atex = carve(&cur, a * sizeof(zs_active_tex));
+        r->priv.textures = carve(&cur, ZS_MAX_FRAME_TEXTURES * sizeof(void *));
+    }
     /* the widest guard band whose projected 28.4 coordinates fit int16 */
     dim = cfg->width > cfg->height ? cfg->width : cfg->height;
     r->priv.guard = (int32_t)(32767u / (8u * dim)) - 1;
@@ -197,6 +208,7 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
         r->priv.depth_scale = f < 8 * (f - n) ? (f * ((int64_t)1 << 30)) / (f - n) : 0;
     }
     memset(&r->stats, 0, sizeof r->stats);
+    r->priv.n_textures = 0;
     reset_shading(r);
     r->priv.n_verts = 0;
     r->priv.n_tris = 0;

@@ -180,6 +180,9 @@ zs_config bench_tex_config(void)
 
 /* T(0, -0.25, -3.5) * Rx(20) * Ry(30), out of line so its matrices are off
  * the caller's frame. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
 static void bench_tex_model(zs_mat34 *model)
 {
     zs_mat34 t = zs_mat34_translate(0, -ZS_FX(1) / 4, -ZS_FX_RATIO(7, 2));

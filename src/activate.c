@@ -255,8 +255,6 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     area2.neg = 1;
     zs_shade_setup(r, a, r->priv.acolor ? &r->priv.acolor[ai] : 0, t, v,
                    zs_asr32(v[0]->x, 4), zs_asr32(v[0]->y, 4), &area2, y);
-    if (r->priv.atex) /* ZS_CFG_TEXTURE */
-        zs_tex_activate(r, a, ai, t, v, &area2, y);
     r->stats.tris_drawn++;
     return 1;
 }

@@ -496,7 +496,8 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
         (uint8_t)(r->shade.shading == ZS_SHADE_GOURAUD && c.lit && m->vertex_normals != 0);
     c.vertex_color = (uint8_t)(r->shade.shading == ZS_SHADE_GOURAUD && m->vertex_colors != 0);
     c.tri_flags = ((c.vertex_light || c.vertex_color) ? ZS_TRI_MODULATE : 0u) |
-                  ((r->shade.fog.enabled && !c.tex_slot) ? ZS_TRI_FOG : 0u); /* texture.c fogs */
+                  ((r->shade.fog.enabled && !c.tex_slot) ? ZS_TRI_FOG : 0u) | /* texture.c fogs */
+                  (c.tex_slot ? ZS_TRI_TEXTURED : 0u);
 
     /* vertices: transform all that fit the pool (capacity policy: the last
      * vertices are dropped, and so are the triangles that use them) */

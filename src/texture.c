@@ -182,20 +182,11 @@ static int32_t quot_exact(uint64_t s, uint64_t d)
 
 /* ---- set-up ---- */
 
-static uint32_t modulate_rgb(uint32_t a, uint32_t b)
-{
-    uint32_t out = 0;
-    int s;
-    for (s = 0; s < 24; s += 8)
-        out |= ((((a >> s) & 255u) * ((b >> s) & 255u) + 127u) / 255u) << s;
-    return out;
-}
-
 /* The plane through the values p[k] at the vertices v[k]: its value at the
  * centre of column 0 of row y0, per column and per row, in 2^-PLANE_FRAC.
  * Gradients come per 1/16 pixel, so the offsets of the centres from vertex
  * 0 multiply them exactly. */
-static void make_plane(uint64_t out[3], const int64_t p[3], const zs_vert *v[3],
+static ZS_NOINLINE void make_plane(uint64_t out[3], const int64_t p[3], const zs_vert *v[3],
                        const zs_recip *area2, int32_t y0)
 {
     int32_t dx1 = v[1]->x - v[0]->x, dy1 = v[1]->y - v[0]->y;
@@ -211,7 +202,7 @@ static void make_plane(uint64_t out[3], const int64_t p[3], const zs_vert *v[3],
 }
 
 /* Fog plane (Q8.16, wrapping), as the colour planes are made. */
-static void fog_plane(uint32_t out[3], const uint32_t f[3], const zs_vert *v[3],
+static ZS_NOINLINE void fog_plane(uint32_t out[3], const uint32_t f[3], const zs_vert *v[3],
                       const zs_recip *area2, int32_t y0)
 {
     int64_t dx1 = (int64_t)v[1]->x - v[0]->x, dy1 = (int64_t)v[1]->y - v[0]->y;
@@ -233,27 +224,16 @@ static int32_t floor_div256(int32_t v)
     return zs_asr32(v, 8);
 }
 
-void zs_tex_activate(zs_renderer *r, zs_active *a, uint16_t ai, const zs_tri *t,
-                     const zs_vert *v[3], const zs_recip *area2, int32_t y)
+/* The 1/w, s/w and t/w planes (out of line: a frame of its own, off the
+ * activation's deepest path). */
+static ZS_NOINLINE void texture_planes(const zs_renderer *r, zs_active_tex *at, const zs_tri *t,
+                                       const zs_vert *v[3], const zs_recip *area2, int32_t y)
 {
     const zs_tex_vert *tv = r->priv.tex_verts;
-    const zs_texture *tex;
-    zs_active_tex *at;
+    const zs_texture *tex = r->priv.textures[at->slot - 1u];
     int64_t q[3], p[3], qmax, A = r->priv.tex_depth_a;
     int32_t s[3], tt[3], smin, tmin;
-    uint32_t flags = t->color >> 24;
     int k;
-    if (!tv[t->v[0]].slot || r->shade.format == ZS_FMT_ID16)
-        return;
-    at = &r->priv.atex[ai];
-    at->slot = tv[t->v[0]].slot;
-    tex = r->priv.textures[at->slot - 1u];
-    at->y0 = (int16_t)y;
-    at->flags = (a->flags & ZS_ACT_GOURAUD) ? ZS_ATEX_LIGHT : 0u;
-    /* the flat lit colour (fog is this stage's: geometry left it out) */
-    at->light = t->color & WHITE;
-    if ((flags & ZS_TRI_MODULATE) && r->priv.vshade)
-        at->light = modulate_rgb(at->light, r->priv.vshade[t->v[0]] & WHITE);
     /* 1/w at the vertices, scaled so that the largest is in [2^21, 2^22) */
     qmax = 1;
     for (k = 0; k < 3; k++) {
@@ -312,16 +292,39 @@ void zs_tex_activate(zs_renderer *r, zs_active *a, uint16_t ai, const zs_tri *t,
     for (k = 0; k < 3; k++)
         p[k] = (int64_t)tt[k] * q[k];
     make_plane(at->t, p, v, area2, y);
-    if (r->priv.vshade && r->shade.fog.enabled) {
+}
+
+/* The texture and fog planes of active triangle ai (its record textured),
+ * made on its first span. */
+static ZS_NOINLINE void tex_setup(const zs_renderer *r, zs_active_tex *at, uint16_t ai)
+{
+    const zs_active *a = &r->priv.active[ai];
+    const zs_tri *t = &r->priv.tris[a->tri];
+    const zs_vert *pool = r->priv.verts, *v[3];
+    int32_t y = a->y0;
+    zs_recip area2;
+    int k;
+    /* the vertices in submission order (per-vertex data follows t->v), as
+     * zs_shade_setup has them; the area is negative then */
+    v[0] = &pool[t->v[0]];
+    v[1] = &pool[t->v[1]];
+    v[2] = &pool[t->v[2]];
+    zs_recip_init(&area2, zs_area2(v[0], v[1], v[2]));
+    at->tri = a->tri;
+    at->serial = r->priv.tex_serial;
+    at->y0 = (int16_t)y;
+    at->slot = r->priv.tex_verts[t->v[0]].slot;
+    at->flags = 0;
+    texture_planes(r, at, t, v, &area2, y);
+    if (r->shade.fog.enabled) { /* fog is this stage's: geometry left it out */
         uint32_t f[3];
         for (k = 0; k < 3; k++)
             f[k] = r->priv.vshade[t->v[k]] >> 24;
         if (f[0] | f[1] | f[2]) {
             at->flags |= ZS_ATEX_FOG;
-            fog_plane(at->f, f, v, area2, y);
+            fog_plane(at->f, f, v, &area2, y);
         }
     }
-    a->flags |= ZS_ACT_GOURAUD | ZS_ACT_TEXTURED;
 }
 
 /* ---- the fill ---- */
@@ -372,6 +375,7 @@ typedef struct tex_span {
     int clamp;
     /* light and fog planes, evaluated at the current column */
     uint32_t cr, cg, cb, dr, dg, db, f, df;
+    uint32_t light; /* RGB888, where the planes are constant along the span */
     int light_planes, fog;
     uint32_t fog_rgb;
     uint8_t *p;
@@ -408,10 +412,10 @@ static void put_pixel(tex_span *ts, uint32_t c565_or_rgb, int is_rgb)
         ts->cr += ts->dr;
         ts->cg += ts->dg;
         ts->cb += ts->db;
-    } else if (ts->at->light != WHITE) {
-        R = mul255(R, (ts->at->light >> 16) & 255u);
-        G = mul255(G, (ts->at->light >> 8) & 255u);
-        B = mul255(B, ts->at->light & 255u);
+    } else if (ts->light != WHITE) {
+        R = mul255(R, (ts->light >> 16) & 255u);
+        G = mul255(G, (ts->light >> 8) & 255u);
+        B = mul255(B, ts->light & 255u);
     }
     if (ts->fog) {
         uint32_t f = chan(ts->f);
@@ -578,33 +582,37 @@ static int affine_ok(int32_t ds, int32_t dt, int32_t qa, int32_t qb)
 void zs_fill_textured(const zs_renderer *r, uint16_t ai, int32_t y, uint8_t *row, int x0,
                       int x1)
 {
-    const zs_active_tex *at = &r->priv.atex[ai];
+    zs_active_tex *at = &r->priv.atex[ai];
+    const zs_active *act = &r->priv.active[ai];
+    const zs_active_color *ac = &r->priv.acolor[ai];
     tex_span ts;
-    int32_t dy = y - at->y0, x;
+    int32_t dy, x, cdy = y - act->y0;
     int bilinear;
+    if (at->tri != act->tri || at->serial != r->priv.tex_serial || at->y0 != act->y0)
+        tex_setup(r, at, ai);
+    dy = y - at->y0;
     ts.at = at;
     ts.tex = r->priv.textures[at->slot - 1u];
     ts.clamp = (ts.tex->flags & ZS_TEX_CLAMP) != 0;
     ts.bpp = r->priv.bpp;
     ts.fmt = r->shade.format;
     ts.p = row + (size_t)x0 * ts.bpp;
-    ts.light_planes = (at->flags & ZS_ATEX_LIGHT) != 0;
     ts.fog = (at->flags & ZS_ATEX_FOG) != 0;
     ts.fog_rgb = r->shade.fog.color;
+    /* the light's planes as zs_fill_gouraud steps them (wrapping products) */
+    ts.cr = ac->crow[0] + (uint32_t)ac->cdy[0] * (uint32_t)cdy + (uint32_t)ac->cdx[0] * (uint32_t)x0;
+    ts.cg = ac->crow[1] + (uint32_t)ac->cdy[1] * (uint32_t)cdy + (uint32_t)ac->cdx[1] * (uint32_t)x0;
+    ts.cb = ac->crow[2] + (uint32_t)ac->cdy[2] * (uint32_t)cdy + (uint32_t)ac->cdx[2] * (uint32_t)x0;
+    ts.dr = (uint32_t)ac->cdx[0];
+    ts.dg = (uint32_t)ac->cdx[1];
+    ts.db = (uint32_t)ac->cdx[2];
+    /* constant along the span: the light of its first pixel, not stepped */
+    ts.light_planes = (ts.dr | ts.dg | ts.db) != 0;
+    ts.light = (chan(ts.cr) << 16) | (chan(ts.cg) << 8) | chan(ts.cb);
     bilinear = (ts.tex->flags & ZS_TEX_BILINEAR) != 0;
-    ts.direct = !bilinear && !ts.light_planes && !ts.fog && at->light == WHITE &&
+    ts.direct = !bilinear && !ts.light_planes && !ts.fog && ts.light == WHITE &&
                 (ts.fmt == ZS_FMT_RGB565_BE || ts.fmt == ZS_FMT_RGB565);
-    ts.cr = ts.cg = ts.cb = ts.dr = ts.dg = ts.db = ts.f = ts.df = 0;
-    if (ts.light_planes) { /* as zs_fill_gouraud: wrapping products */
-        const zs_active_color *ac = &r->priv.acolor[ai];
-        int32_t cdy = y - r->priv.active[ai].y0;
-        ts.cr = ac->crow[0] + (uint32_t)ac->cdy[0] * (uint32_t)cdy + (uint32_t)ac->cdx[0] * (uint32_t)x0;
-        ts.cg = ac->crow[1] + (uint32_t)ac->cdy[1] * (uint32_t)cdy + (uint32_t)ac->cdx[1] * (uint32_t)x0;
-        ts.cb = ac->crow[2] + (uint32_t)ac->cdy[2] * (uint32_t)cdy + (uint32_t)ac->cdx[2] * (uint32_t)x0;
-        ts.dr = (uint32_t)ac->cdx[0];
-        ts.dg = (uint32_t)ac->cdx[1];
-        ts.db = (uint32_t)ac->cdx[2];
-    }
+    ts.f = ts.df = 0;
     if (ts.fog) {
         ts.f = at->f[0] + (uint32_t)at->f[2] * (uint32_t)dy + (uint32_t)at->f[1] * (uint32_t)x0;
         ts.df = at->f[1];

@@ -48,12 +48,8 @@ static void write_runs(zs_renderer *r, int32_t y, const uint16_t *owner, uint8_t
         x = run_end(owner, x + 1, x1, o);
         if (o == ZS_NONE)
             zs_fill_flat(row, xs, x, bpp, background);
-        else if (act[o].flags & ZS_ACT_GOURAUD) {
-            if (act[o].flags & ZS_ACT_TEXTURED)
-                zs_fill_textured(r, o, y, row, xs, x);
-            else
-                zs_fill_gouraud(r, &r->priv.acolor[o], y - act[o].y0, row, xs, x);
-        }
+        else if (act[o].flags & ZS_ACT_GOURAUD)
+            zs_fill_gouraud(r, &r->priv.acolor[o], y - act[o].y0, row, xs, x);
         else
             zs_fill_flat(row, xs, x, bpp, act[o].pixel);
         r->stats.spans++;

@@ -35,6 +35,8 @@ typedef struct zs_tri {
 } zs_tri;
 #define ZS_TRI_MODULATE 0x01u  /* colour_i = face * vertex rgb_i / 255 */
 #define ZS_TRI_FOG 0x02u       /* blend toward the fog colour by vertex fog */
+#define ZS_TRI_TEXTURED 0x04u  /* textured: its light always in colour planes, so
+                                  zs_fill_gouraud hands its spans to texture.c */
 
 /* An edge stepped down the rows (28 bytes). Column = ceil(x - 0.5) exactly:
  * x is the integer column, err the remainder of the exact rational.
@@ -84,8 +86,6 @@ typedef struct zs_active_color {
 #define ZS_ACT_GOURAUD 0x01u   /* colour varies across the triangle */
 #define ZS_ACT_LONG_LEFT 0x02u /* the long edge is its left edge */
 #define ZS_ACT_STEEP 0x04u     /* needle: zrow anchored exactly on every row */
-#define ZS_ACT_TEXTURED 0x80u  /* texture.c fills it (set with ZS_ACT_GOURAUD, so
-                                  flat spans never test it) */
 
 /* Compile-time checks that the header's sizes match the records. */
 typedef char zs_check_vert[(sizeof(zs_vert) == ZS_VERTEX_BYTES) ? 1 : -1];
@@ -275,15 +275,18 @@ typedef struct zs_active_tex {
                                   row), wrapping: 1/w, s/w, t/w (texel
                                   coordinates in 1/256 texel) */
     uint32_t f[3];             /* fog plane, Q8.16 wrapping (same layout) */
-    uint32_t light;            /* RGB888 lit colour of a flat triangle */
+    uint32_t serial;           /* priv.tex_serial of the frame it was made in */
     int32_t s_base, t_base;    /* whole texels added to the texel indices */
     int32_t s_max, t_max;      /* the texel coordinates' range (1/256 texel) */
     int32_t q_min_hi;          /* smallest vertex 1/w, plane units >> 16 */
-    int16_t y0;
+    int16_t y0;                /* the activation row the planes refer to */
     uint8_t slot, flags;       /* texture slot; ZS_ATEX_* */
+    uint16_t tri;              /* the record they were made for (with serial and
+                                  y0: made on the first span, for the record in
+                                  that active slot) */
+    uint16_t pad[3];
 } zs_active_tex;
 #define ZS_ATEX_FOG 0x01u      /* fogged */
-#define ZS_ATEX_LIGHT 0x02u    /* the light varies: the colour planes (acolor) */
 typedef char zs_check_tex_vert[(sizeof(zs_tex_vert) == ZS_TEX_VERTEX_BYTES) ? 1 : -1];
 typedef char zs_check_atex[(sizeof(zs_active_tex) == ZS_ACTIVE_TEX_BYTES) ? 1 : -1];
 /* zs_draw: checks a mesh's texture and takes its frame slot (*slot 0 for an
@@ -291,10 +294,9 @@ typedef char zs_check_atex[(sizeof(zs_active_tex) == ZS_ACTIVE_TEX_BYTES) ? 1 : 
 zs_status zs_tex_draw(zs_renderer *r, const zs_mesh *m, uint8_t *slot);
 /* The texture coordinates of the draw's vertices base .. base + n - 1. */
 void zs_tex_vertices(zs_renderer *r, const zs_mesh *m, uint16_t base, uint32_t n, uint8_t slot);
-/* After zs_shade_setup: the texture planes of a textured triangle. */
-void zs_tex_activate(zs_renderer *r, zs_active *a, uint16_t ai, const zs_tri *t,
-                     const zs_vert *v[3], const zs_recip *area2, int32_t y);
-/* Fills [x0, x1) of row y with active triangle ai's texture. */
+/* Fills [x0, x1) of row y with active triangle ai's texture (its record
+ * ZS_TRI_TEXTURED; its light in the colour planes); makes the texture planes
+ * on the triangle's first span. */
 void zs_fill_textured(const zs_renderer *r, uint16_t ai, int32_t y, uint8_t *row, int x0,
                       int x1);
 

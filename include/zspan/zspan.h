@@ -154,8 +154,9 @@ const char *zs_strerror(zs_status status);
                                     a draw-start bit per triangle record (8 B + 1 bit) */
 #define ZS_CFG_TEXTURE 0x10u     /* texture mapping (zs_mesh.uvs, zs_mesh.texture):
                                     6 B per vertex, ZS_ACTIVE_TEX_BYTES per active
-                                    triangle, a table of ZS_MAX_FRAME_TEXTURES
-                                    texture pointers */
+                                    triangle (and the shade words and colour
+                                    planes even with ZS_CFG_FLAT_ONLY), a table of
+                                    ZS_MAX_FRAME_TEXTURES texture pointers */
 
 /* Sizes of the records the arena holds (checked against sizeof in src/). */
 #define ZS_VERTEX_BYTES 8u        /* screen x, y (28.4 in int16) and depth */
@@ -166,7 +167,7 @@ const char *zs_strerror(zs_status status);
 #define ZS_ACTIVE_COLOR_BYTES 36u /* per active triangle: colour planes */
 #define ZS_TRI_NORMAL_BYTES 8u    /* ZS_CFG_LINES: a record's eye-space normal, draw */
 #define ZS_TEX_VERTEX_BYTES 6u    /* ZS_CFG_TEXTURE: a vertex's u, v and texture slot */
-#define ZS_ACTIVE_TEX_BYTES 112u  /* ZS_CFG_TEXTURE: per active triangle, texture planes */
+#define ZS_ACTIVE_TEX_BYTES 120u  /* ZS_CFG_TEXTURE: per active triangle, texture planes */
 #define ZS_MAX_FRAME_TEXTURES 16u /* distinct textures one frame may draw with */
 #define ZS_ARENA_ALIGN 8u
 
@@ -185,14 +186,15 @@ const char *zs_strerror(zs_status status);
  * per triangle record. */
 #define ZS_ARENA_BYTES_CFG(w, h, max_tris, max_verts, max_edges, flags)            \
     (ZS_ROUND8_((size_t)(max_verts) * ZS_VERTEX_BYTES) +                            \
-     (((flags) & ZS_CFG_FLAT_ONLY) ? 0u                                             \
-                                   : ZS_ROUND8_((size_t)(max_verts) * ZS_VERTEX_SHADE_BYTES)) + \
+     ((((flags) & (ZS_CFG_FLAT_ONLY | ZS_CFG_TEXTURE)) == ZS_CFG_FLAT_ONLY)         \
+          ? 0u                                                                      \
+          : ZS_ROUND8_((size_t)(max_verts) * ZS_VERTEX_SHADE_BYTES)) +              \
      ZS_ROUND8_((size_t)(max_tris) * ZS_TRIANGLE_BYTES) +                           \
      ZS_ROUND8_((size_t)(h) * 2u) +                                                 \
      ZS_ROUND8_((size_t)(max_edges) * ZS_EDGE_BYTES) +                              \
      2u * ZS_ROUND8_((size_t)(max_edges) * 2u) +                                    \
      ZS_ROUND8_((size_t)((max_edges) / 2u) * ZS_ACTIVE_BYTES) +                     \
-     (((flags) & ZS_CFG_FLAT_ONLY)                                                  \
+     ((((flags) & (ZS_CFG_FLAT_ONLY | ZS_CFG_TEXTURE)) == ZS_CFG_FLAT_ONLY)         \
           ? 0u                                                                      \
           : ZS_ROUND8_((size_t)((max_edges) / 2u) * ZS_ACTIVE_COLOR_BYTES)) +       \
      2u * ZS_ROUND8_((size_t)((max_edges) / 2u) * 2u) +                             \
@@ -530,6 +532,7 @@ typedef struct zs_renderer_private {
     const struct zs_texture **textures; /* the frame's textures, slot k at k - 1 */
     int64_t tex_depth_a;              /* far / (far - near), Q30 (1/w ~ A - depth) */
     uint8_t n_textures;               /* slots used this frame */
+    uint32_t tex_serial;              /* frames begun (texture planes' freshness) */
     zs_setup_hook_fn setup_hook;
     void *setup_hook_user;
 } zs_renderer_private;

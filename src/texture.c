@@ -189,14 +189,14 @@ static int32_t quot_exact(uint64_t s, uint64_t d)
 static ZS_NOINLINE void make_plane(uint64_t out[3], const int64_t p[3], const zs_vert *v[3],
                        const zs_recip *area2, int32_t y0)
 {
-    int32_t dx1 = v[1]->x - v[0]->x, dy1 = v[1]->y - v[0]->y;
-    int32_t dx2 = v[2]->x - v[0]->x, dy2 = v[2]->y - v[0]->y;
+    int32_t dx1 = (int32_t)v[1]->x - v[0]->x, dy1 = (int32_t)v[1]->y - v[0]->y;
+    int32_t dx2 = (int32_t)v[2]->x - v[0]->x, dy2 = (int32_t)v[2]->y - v[0]->y;
     int64_t d1 = p[1] - p[0], d2 = p[2] - p[0]; /* |d| < 2^45, |dx|, |dy| < 2^16 */
     int64_t gx = zs_recip_muldiv(area2, d1 * dy2 - d2 * dy1, PLANE_FRAC, (int64_t)1 << 58);
     int64_t gy = zs_recip_muldiv(area2, d2 * dx1 - d1 * dx2, PLANE_FRAC, (int64_t)1 << 58);
     uint64_t ugx = (uint64_t)gx, ugy = (uint64_t)gy; /* two's complement, wrapping */
-    out[0] = ((uint64_t)p[0] << PLANE_FRAC) + wmul(ugx, 8 - v[0]->x) +
-             wmul(ugy, 16 * y0 + 8 - v[0]->y);
+    out[0] = ((uint64_t)p[0] << PLANE_FRAC) + wmul(ugx, (int32_t)8 - v[0]->x) +
+             wmul(ugy, 16 * y0 + 8 - (int32_t)v[0]->y);
     out[1] = ugx << 4;
     out[2] = ugy << 4;
 }
@@ -212,7 +212,7 @@ static ZS_NOINLINE void fog_plane(uint32_t out[3], const uint32_t f[3], const zs
     int32_t gx = (int32_t)zs_recip_muldiv(area2, d1 * dy2 - d2 * dy1, 4, (int64_t)1 << 28);
     int32_t gy = (int32_t)zs_recip_muldiv(area2, d2 * dx1 - d1 * dx2, 4, (int64_t)1 << 28);
     int64_t co = c0 + 32768 +
-                 zs_asr64((int64_t)gx * (8 - v[0]->x) + (int64_t)gy * (16 * (int64_t)y0 + 8 - v[0]->y),
+                 zs_asr64((int64_t)gx * ((int32_t)8 - v[0]->x) + (int64_t)gy * (16 * (int64_t)y0 + 8 - v[0]->y),
                           4);
     out[0] = (uint32_t)co;
     out[1] = (uint32_t)gx;
@@ -556,8 +556,8 @@ static void subdiv_at(const zs_active_tex *at, int32_t x, int32_t dy, int32_t *s
 {
     int low;
     uint64_t q = q_at(at, x, dy, &low);
-    *s = zs_clampi(quot_exact(plane_at(at->s, x, dy), q), -(1 << 24), 1 << 24);
-    *t = zs_clampi(quot_exact(plane_at(at->t, x, dy), q), -(1 << 24), 1 << 24);
+    *s = zs_clampi(quot_exact(plane_at(at->s, x, dy), q), -((int32_t)1 << 24), (int32_t)1 << 24);
+    *t = zs_clampi(quot_exact(plane_at(at->t, x, dy), q), -((int32_t)1 << 24), (int32_t)1 << 24);
     *qh = low ? 0 : (int32_t)(q >> PLANE_FRAC); /* <= 2^23 */
 }
 

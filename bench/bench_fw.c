@@ -207,7 +207,7 @@ int main(void)
             for (k = 0; k < BENCH_TEX_VARIANTS; k++) {
                 uint32_t sum = 0;
                 uint64_t a = port_ticks(), b;
-                zs_status st = bench_tex_frame(&r, &cam, k, &sum);
+                zs_status st = bench_tex_frame(&r, &cam, k, &sum, 0);
                 b = port_ticks();
                 if (st != ZS_OK) {
                     sh_printf("E %s textured %s 0 %s\n", board, bench_tex_names[k],

@@ -202,15 +202,15 @@ int main(int argc, char **argv)
                     return 1;
                 }
                 for (k = 0; k < BENCH_TEX_VARIANTS; k++) {
-                    uint32_t sum = 0;
-                    zs_status st = bench_tex_frame(&tr, &cam, k, &sum);
+                    uint32_t sum = 0, covered = 0;
+                    zs_status st = bench_tex_frame(&tr, &cam, k, &sum, &covered);
                     if (st != ZS_OK) {
                         fprintf(stderr, "bench_host: textured %s: %s\n", bench_tex_names[k],
                                 zs_strerror(st));
                         return 1;
                     }
-                    printf("R host textured %s 0 sum=%08lx dropped=%lu\n", bench_tex_names[k],
-                           (unsigned long)sum,
+                    printf("R host textured %s 0 sum=%08lx covered=%lu dropped=%lu\n",
+                           bench_tex_names[k], (unsigned long)sum, (unsigned long)covered,
                            (unsigned long)(tr.stats.tris_dropped + tr.stats.verts_dropped +
                                            tr.stats.records_skipped));
                 }

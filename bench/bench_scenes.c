@@ -191,7 +191,8 @@ static void bench_tex_model(zs_mat34 *model)
     *model = zs_mat34_mul(&t, &rxy);
 }
 
-zs_status bench_tex_frame(zs_renderer *r, const zs_camera *cam, int k, uint32_t *sum)
+zs_status bench_tex_frame(zs_renderer *r, const zs_camera *cam, int k, uint32_t *sum,
+                          uint32_t *covered)
 {
     static uint8_t line[BENCH_W * 2];
     static const zs_texture *const texs[BENCH_TEX_VARIANTS] = {
@@ -247,9 +248,16 @@ zs_status bench_tex_frame(zs_renderer *r, const zs_camera *cam, int k, uint32_t 
         (st = zs_draw(r, &cube, &model)) != ZS_OK)
         return st;
     *sum = BENCH_FNV_BASIS;
+    if (covered)
+        *covered = 0;
     for (y = 0; st == ZS_OK && y < BENCH_H; y++) {
         st = zs_render_rows(r, y, 1, line, sizeof line);
         *sum = bench_fnv1a(*sum, line, sizeof line);
+        if (covered) { /* the background in RGB565 big-endian */
+            unsigned x, bg = ((20u >> 3) << 11) | ((30u >> 2) << 5) | (60u >> 3);
+            for (x = 0; x < BENCH_W; x++)
+                *covered += ((unsigned)line[2 * x] << 8 | line[2 * x + 1]) != bg;
+        }
     }
     return st;
 }

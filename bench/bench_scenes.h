@@ -63,11 +63,14 @@ zs_status bench_mono_frame(zs_renderer *r, const zs_camera *cam, const bench_sce
  * 3 "tex-subdiv" (1 subdivided), 4 "tex-bilinear" (bilinear, exact, flat
  * lit), 5 "tex-lit-fog" (32 x 32 palette, bilinear, subdivided, clamped,
  * Gouraud lit with vertex colours, fog). The renderer: bench_tex_config().
- * The checksum is FNV-1a 32 over the rows in order. */
+ * The checksum is FNV-1a 32 over the rows in order; covered (may be NULL)
+ * gets the number of pixels that are not the background (the bench's
+ * textured pixels). */
 #define BENCH_TEX_VARIANTS 6
 extern const char *const bench_tex_names[BENCH_TEX_VARIANTS];
 zs_config bench_tex_config(void);
-zs_status bench_tex_frame(zs_renderer *r, const zs_camera *cam, int k, uint32_t *sum);
+zs_status bench_tex_frame(zs_renderer *r, const zs_camera *cam, int k, uint32_t *sum,
+                          uint32_t *covered);
 /* FNV-1a 32 of n bytes, continuing from h. */
 uint32_t bench_fnv1a(uint32_t h, const uint8_t *p, size_t n);
 

@@ -527,6 +527,61 @@ static int32_t clamp_coord(int32_t v, int32_t max)
     return zs_clampi(v, 0, max);
 }
 
+/* The common case of the exact nearest loop below (unlit, unfogged RGB565
+ * texels repeated into RGB565 rows), the same arithmetic with its state in
+ * locals: n pixels from p. */
+static void nearest_direct(const zs_texture *tex, const zs_active_tex *at, uint8_t *p, int be,
+                           int n, dda *cs, dda *ct, uint64_t d, uint64_t dd)
+{
+    const uint16_t *tx = (const uint16_t *)tex->texels;
+    uint32_t wm = tex->width - 1u, hm = tex->height - 1u, w = tex->width;
+    int32_t nmax_s = at->s_max >> 8, nmax_t = at->t_max >> 8;
+    int32_t sb = at->s_base, tb = at->t_base, ns = cs->n, nt = ct->n;
+    uint64_t es = cs->e, gs = cs->g, et = ct->e, gt = ct->g;
+    for (; n > 0; n--, p += 2) {
+        uint32_t c, i, j;
+        int32_t us = 0, ut = 0;
+        if (to_signed(d) > 0) {
+            if (es >= d) { /* unsigned: below zero or at least d */
+                cs->e = es;
+                cs->g = gs;
+                dda_fix(cs, d, dd);
+                es = cs->e;
+                gs = cs->g;
+                ns = cs->n;
+            }
+            if (et >= d) {
+                ct->e = et;
+                ct->g = gt;
+                dda_fix(ct, d, dd);
+                et = ct->e;
+                gt = ct->g;
+                nt = ct->n;
+            }
+            us = ns;
+            ut = nt;
+        }
+        i = (uint32_t)(clamp_coord(us, nmax_s) + sb) & wm;
+        j = (uint32_t)(clamp_coord(ut, nmax_t) + tb) & hm;
+        c = tx[j * w + i];
+        if (be) {
+            p[0] = (uint8_t)(c >> 8);
+            p[1] = (uint8_t)c;
+        } else {
+            union {
+                uint16_t v;
+                uint8_t b[2];
+            } u; /* the host's byte order */
+            u.v = (uint16_t)c;
+            p[0] = u.b[0];
+            p[1] = u.b[1];
+        }
+        es += gs;
+        et += gt;
+        d += dd;
+    }
+}
+
 /* 1/w at column x (plane units), no less than the triangle's least; *low
  * set where it was less (off the triangle, toward its horizon). */
 static uint64_t q_at(const zs_active_tex *at, int32_t x, int32_t dy, int *low)
@@ -664,6 +719,10 @@ void zs_fill_textured(const zs_renderer *r, uint16_t ai, int32_t y, uint8_t *row
         dda cs, ct;
         dda_start(&cs, s0, at->s[1], d, dd);
         dda_start(&ct, t0, at->t[1], d, dd);
+        if (ts.direct && ts.tex->format == ZS_TEX_RGB565 && !ts.clamp) {
+            nearest_direct(ts.tex, at, ts.p, ts.fmt == ZS_FMT_RGB565_BE, x1 - x0, &cs, &ct, d, dd);
+            return;
+        }
         for (x = x0; x < x1; x++) {
             int32_t ns = 0, nt = 0;
             if (to_signed(d) > 0) {

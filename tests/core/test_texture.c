@@ -666,6 +666,11 @@ static void test_errors(void **state)
         assert_int_equal(zs_draw(&c.r, &again, NULL), ZS_OK);
     }
     assert_true(strstr(zs_strerror(ZS_ERR_TEXTURE), "power of two") != NULL);
+    { /* the A-buffer's fragments carry no texture: the two are not combined */
+        zs_config both = zs_config_default(W, H, 16, 16, 16);
+        both.flags = ZS_CFG_TEXTURE | ZS_CFG_ABUFFER;
+        assert_int_equal(zs_arena_bytes(&both), 0);
+    }
     zt_ctx_free(&c);
     zt_ctx_free(&plain);
 }

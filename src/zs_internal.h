@@ -466,19 +466,13 @@ static inline void zs_fill2(uint8_t *p, int n, uint32_t pair)
             q = zs_store_blocks(q, (uint32_t)n >> 3, pair);
             n &= 7;
         }
-        switch (n >> 1) { /* the rest: up to three words, then a half */
-        case 3:
-            *q++ = pair;
-            /* fall through */
-        case 2:
-            *q++ = pair;
-            /* fall through */
-        case 1:
-            *q++ = pair;
-            break;
-        default:
-            break;
+        if (n & 4) { /* the rest (under 8): two words, a word, a half */
+            q[0] = pair;
+            q[1] = pair;
+            q += 2;
         }
+        if (n & 2)
+            *q++ = pair;
         if (n & 1)
             *(zs_half_alias *)(void *)q = (uint16_t)pair;
         return;

@@ -35,7 +35,8 @@ fi
 if [ "$what" = quick ]; then
     "$BENCH_HOST" run --scene sphere285 --mode both --frames 1 --mono > "$work/host.txt" || fail "bench_host"
 else
-    "$BENCH_HOST" run --mode both > "$work/host.txt" || fail "bench_host"
+    # --mono: also the 1-bit and textured frames the image renders
+    "$BENCH_HOST" run --mode both --mono > "$work/host.txt" || fail "bench_host"
 fi
 
 # "R BOARD SCENE MODE FRAME ... sum=X ... dropped=N": compare by (scene, mode, frame).

@@ -67,6 +67,7 @@ typedef struct zs_aa_state {
     uint32_t *runs;       /* opacity runs: first record << 8 | opacity */
     uint16_t *order;      /* open slots by first column (the crossing sweep) */
     uint16_t n_open, cap_open, n_runs;
+    int16_t next_row;     /* the next row to resolve or step */
     uint8_t opacity;      /* for the draws that follow */
     uint8_t any_alpha;    /* a transparent record is open on this row */
 } zs_aa_state;
@@ -692,9 +693,10 @@ void zs_abuffer_begin(zs_renderer *r)
         }
     }
     s->n_open = 0;
+    s->next_row = 0;
 }
 
-void zs_abuffer_row(zs_renderer *r, int y, uint8_t *row)
+static void one_row(zs_renderer *r, int y, uint8_t *row)
 {
     zs_aa_state *s = r->priv.aa;
     const int32_t w = (int32_t)r->cfg.width;
@@ -720,6 +722,22 @@ void zs_abuffer_row(zs_renderer *r, int y, uint8_t *row)
             i++;
         }
     }
+}
+
+void zs_abuffer_row(zs_renderer *r, int y, uint8_t *row)
+{
+    zs_aa_state *s = r->priv.aa;
+    for (; s->next_row < y; s->next_row++)
+        one_row(r, s->next_row, 0); /* rows the caller skipped */
+    one_row(r, y, row);
+    s->next_row = (int16_t)(y + 1);
+}
+
+void zs_abuffer_rows(zs_renderer *r, int y0, int rows, uint8_t *buf, size_t stride)
+{
+    int k;
+    for (k = 0; k < rows; k++)
+        zs_abuffer_row(r, y0 + k, buf + (size_t)k * stride);
 }
 
 /* Keeps a triangle that covers no pixel centre for the resolve alone: a

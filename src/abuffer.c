@@ -178,7 +178,9 @@ static void open_tri(zs_renderer *r, zs_aa_state *s, uint16_t rec, int32_t Y)
     a->ybot = v2->y;
     a->ycur = Y;
     edge_init(a->long_left ? &a->left : &a->right, v0, v2, Y);
-    if (v0->y == v1->y) { /* flat top: the short edge is the lower one at once */
+    if (v0->y == v1->y || (Y >= v1->y && v1->y < v2->y)) {
+        /* flat top, or the middle vertex above this row: the lower short edge at once
+         * (the upper one, extrapolated this far, could leave the int32 range) */
         edge_init(a->long_left ? &a->right : &a->left, v1, v2, Y);
         a->lower = 1;
     } else {

@@ -270,3 +270,16 @@ void zs_continue_edge(zs_renderer *r, uint16_t ai, int32_t y)
     if (left_side && (a->flags & ZS_ACT_STEEP))
         zs_anchor_depth(r, a, zs_clampi(r->priv.edges[ei].x, 0, r->cfg.width), y);
 }
+
+/* Warnock mode and picking (area.c) evaluate records without activating
+ * them: the same canonical order and plane, so the same depths. */
+void zs_canonical_vertices(const zs_renderer *r, const zs_tri *t, const zs_vert *v[3])
+{
+    sort_canonical(r, t, v);
+}
+
+void zs_record_depth_plane(zs_active *a, const zs_vert *s[3], const zs_recip *area2, int32_t ox,
+                           int32_t oy, int32_t y)
+{
+    depth_plane(a, s, area2, ox, oy, y);
+}

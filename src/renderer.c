@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The renderer context: configuration, arena layout, frame life cycle and
  * the band API. */
+#include "zs_centre.h"
 #include "zs_mono.h"
 
 zs_config zs_config_default(uint16_t width, uint16_t height, uint16_t max_triangles,
@@ -171,7 +172,7 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
         return ZS_ERR_NULL;
     if (r->priv.state == ZS_STATE_NONE)
         return ZS_ERR_STATE;
-    if (mode != ZS_MODE_SPAN && mode != ZS_MODE_ZLINE)
+    if (mode != ZS_MODE_SPAN && mode != ZS_MODE_ZLINE && mode != ZS_MODE_WARNOCK)
         return ZS_ERR_MODE;
     if (mode == ZS_MODE_ZLINE && (r->cfg.flags & ZS_CFG_NO_ZLINE))
         return ZS_ERR_MODE;
@@ -202,6 +203,7 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
     r->priv.n_tris = 0;
     r->priv.tag_counter = 0;
     r->priv.next_row = 0;
+    r->priv.tall_rows = 0xFFFFu; /* counted when Warnock mode or zs_pick needs it */
     memset(r->priv.buckets, 0xFF, (size_t)r->cfg.height * 2u);
     if (r->priv.draw_starts)
         memset(r->priv.draw_starts, 0, ((size_t)r->cfg.max_triangles + 7u) / 8u);
@@ -258,6 +260,15 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
     return ZS_OK;
 }
 
+/* One row of visibility: the row machinery, or area subdivision. */
+static void visible_row(zs_renderer *r, int y, uint8_t *row)
+{
+    if (r->priv.mode == ZS_MODE_WARNOCK)
+        zs_warnock_rows(r, y, 1, row, 0);
+    else
+        zs_raster_row(r, y, row);
+}
+
 /* One row of a 1-bit frame: the scratch line, then dithered and packed. */
 static void mono_row(zs_renderer *r, int y, uint8_t *out)
 {
@@ -268,10 +279,10 @@ static void mono_row(zs_renderer *r, int y, uint8_t *out)
 #else
     uint8_t *grey = r->priv.mono_grey;
     if (r->shade.mono & ZS_MONO_LINES) {
-        zs_raster_row(r, y, (uint8_t *)r->priv.line_ids[0]);
+        visible_row(r, y, (uint8_t *)r->priv.line_ids[0]);
         zs_lines_row(r, y, grey);
     } else {
-        zs_raster_row(r, y, grey);
+        visible_row(r, y, grey);
     }
     zs_mono_row(r, y, grey, out);
 #endif
@@ -316,10 +327,16 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
         r->priv.state = ZS_STATE_RENDERING;
     }
     for (y = r->priv.next_row; y < y0; y++) {
-        zs_raster_row(r, y, 0);
+        if (r->priv.mode != ZS_MODE_WARNOCK) /* it keeps no state between rows */
+            zs_raster_row(r, y, 0);
         r->priv.line_prev_row = 0; /* no ids of the row above */
     }
-    for (y = y0; y < y0 + rows; y++) {
+    y = y0;
+    if (!mono && r->priv.mode == ZS_MODE_WARNOCK) { /* the band as one rectangle */
+        zs_warnock_rows(r, y0, rows, (uint8_t *)buf, stride);
+        y = y0 + rows;
+    }
+    for (; y < y0 + rows; y++) {
         if (!mono)
             zs_raster_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
         else if (r->priv.out_format == ZS_FMT_MONO_PAGE) /* a page holds 8 rows */

@@ -204,6 +204,11 @@ int zs_activate(zs_renderer *r, uint16_t tri, int32_t y);
 void zs_anchor_depth(const zs_renderer *r, zs_active *a, int32_t xa, int32_t y);
 /* Appends the lower short edge of active triangle ai, starting at row y. */
 void zs_continue_edge(zs_renderer *r, uint16_t ai, int32_t y);
+/* The same for area.c (Warnock mode, picking): canonical vertex order and
+ * depth plane of a record, as zs_activate makes them. */
+void zs_canonical_vertices(const zs_renderer *r, const zs_tri *t, const zs_vert *v[3]);
+void zs_record_depth_plane(zs_active *a, const zs_vert *s[3], const zs_recip *area2, int32_t ox,
+                           int32_t oy, int32_t y);
 /* raster.c: rows, edges, the active edge list */
 void zs_raster_begin(zs_renderer *r);
 void zs_raster_row(zs_renderer *r, int y, uint8_t *row); /* row NULL: step only */

@@ -88,6 +88,7 @@ static ZS_NOINLINE void reset_shading(zs_renderer *r)
     r->shade = zs_shade_default();
     r->priv.bpp = (uint8_t)zs_format_bytes(r->shade.format);
     r->priv.out_format = (uint8_t)r->shade.format;
+    r->priv.rows_kind = r->priv.mode == ZS_MODE_WARNOCK ? ZS_ROWS_AREA : ZS_ROWS_BYTES;
 }
 
 zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_config *cfg)
@@ -257,6 +258,9 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
     if (zs_format_is_mono(p->format)) /* the stages render a scratch line */
         r->shade.format = (p->mono & ZS_MONO_LINES) ? ZS_FMT_ID16 : ZS_FMT_GRAY8;
     r->priv.bpp = (uint8_t)zs_format_bytes(r->shade.format);
+    r->priv.rows_kind = zs_format_is_mono(p->format)           ? ZS_ROWS_MONO
+                        : r->priv.mode == ZS_MODE_WARNOCK ? ZS_ROWS_AREA
+                                                          : ZS_ROWS_BYTES;
     return ZS_OK;
 }
 
@@ -290,7 +294,7 @@ static void mono_row(zs_renderer *r, int y, uint8_t *out)
 
 zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t stride)
 {
-    int y, mono;
+    int y, kind;
     size_t need, units;
     if (!r || !buf)
         return ZS_ERR_NULL;
@@ -300,8 +304,8 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
         rows > (int)r->cfg.height - y0)
         return ZS_ERR_ROW;
     /* byte formats first: the common call costs no more than before */
-    mono = r->priv.out_format >= (uint8_t)ZS_FMT_COUNT;
-    if (!mono) {
+    kind = r->priv.rows_kind; /* per frame: byte rows, 1-bit rows, or Warnock */
+    if (kind != ZS_ROWS_MONO) {
         need = (size_t)r->cfg.width * r->priv.bpp;
         units = (size_t)rows;
     } else {
@@ -318,7 +322,7 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
     if (r->priv.state == ZS_STATE_OPEN) {
         zs_raster_begin(r);
 #ifndef ZS_NO_MONO
-        if (mono) {
+        if (kind == ZS_ROWS_MONO) {
             zs_mono_begin(r);
             if (r->shade.mono & ZS_MONO_LINES)
                 zs_lines_begin(r);
@@ -331,18 +335,18 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
             zs_raster_row(r, y, 0);
         r->priv.line_prev_row = 0; /* no ids of the row above */
     }
-    y = y0;
-    if (!mono && r->priv.mode == ZS_MODE_WARNOCK) { /* the band as one rectangle */
-        zs_warnock_rows(r, y0, rows, (uint8_t *)buf, stride);
-        y = y0 + rows;
-    }
-    for (; y < y0 + rows; y++) {
-        if (!mono)
+    if (kind == ZS_ROWS_BYTES) {
+        for (y = y0; y < y0 + rows; y++)
             zs_raster_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
-        else if (r->priv.out_format == ZS_FMT_MONO_PAGE) /* a page holds 8 rows */
-            mono_row(r, y, (uint8_t *)buf + (size_t)(y / 8 - y0 / 8) * stride);
-        else
-            mono_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
+    } else if (kind == ZS_ROWS_AREA) { /* the band as one rectangle */
+        zs_warnock_rows(r, y0, rows, (uint8_t *)buf, stride);
+    } else {
+        for (y = y0; y < y0 + rows; y++) {
+            if (r->priv.out_format == ZS_FMT_MONO_PAGE) /* a page holds 8 rows */
+                mono_row(r, y, (uint8_t *)buf + (size_t)(y / 8 - y0 / 8) * stride);
+            else
+                mono_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
+        }
     }
     r->priv.next_row = y0 + rows;
     r->stats.rows += (uint32_t)rows;

@@ -8,6 +8,10 @@
 
 #define ZS_NONE 0xFFFFu
 
+/* zs_render_rows' paths (priv.rows_kind): the row machinery into byte
+ * rows, into a 1-bit format's scratch line, or Warnock mode's rectangles. */
+enum { ZS_ROWS_BYTES = 0, ZS_ROWS_MONO, ZS_ROWS_AREA };
+
 /* Renderer states. */
 enum { ZS_STATE_NONE = 0, ZS_STATE_READY, ZS_STATE_OPEN, ZS_STATE_RENDERING, ZS_STATE_DONE };
 
@@ -98,7 +102,9 @@ typedef char zs_check_acolor[(sizeof(zs_active_color) == ZS_ACTIVE_COLOR_BYTES) 
 #if defined(__GNUC__)
 #define ZS_COLD __attribute__((cold, noinline))
 #define ZS_NOINLINE __attribute__((noinline)) /* off a caller's frame, or one copy */
+#define ZS_INLINE_ALWAYS __attribute__((always_inline)) inline /* a second caller elsewhere */
 #else
+#define ZS_INLINE_ALWAYS
 #define ZS_COLD
 #define ZS_NOINLINE
 #endif

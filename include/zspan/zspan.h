@@ -478,6 +478,7 @@ typedef struct zs_renderer_private {
     void *setup_hook_user;
     uint16_t tall_rows;               /* Warnock, picking: most rows a record spans
                                          (0xFFFF: not yet counted this frame) */
+    uint8_t rows_kind;                /* how zs_render_rows makes rows this frame */
 } zs_renderer_private;
 
 /* Holds the arena's pools and the frame state. The struct is public so it

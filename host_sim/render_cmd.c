@@ -10,6 +10,7 @@
 
 #include "png_out.h"
 #include "raycast.h"
+#include "regions.h"
 #include "zs_arena.h"
 #include "zs_model.h"
 #include "zs_opts.h"
@@ -593,6 +594,93 @@ done:
     return rc;
 }
 
+/* --svg: the visible regions of the frame's records, coloured as the image
+ * shows them (the colour of the first pixel of each tag; a tag no pixel
+ * shows gets its palette colour). The tags come from a second frame of the
+ * same draws in ID16. Returns 0 or -1. */
+static int svg_output(const sim_render_opts *o, zs_renderer *r, const zs_camera *cam,
+                      const zs_shade_params *sp, const zs_model *scene, const zs_mat34 *model,
+                      const sim_rc_set *recs, const uint8_t *img, size_t stride)
+{
+    size_t np = (size_t)o->width * (size_t)o->height, i, ids_stride = (size_t)o->width * 2;
+    uint8_t *ids = malloc(np * 2);
+    uint32_t *tag_rgb = malloc(65536 * sizeof *tag_rgb), *rgb = malloc((recs->n + 1) * sizeof *rgb);
+    uint8_t *seen = calloc(65536, 1);
+    zs_shade_params idp = *sp;
+    sim_vr_result res;
+    int rc = -1, x, y;
+    zs_status st;
+    memset(&res, 0, sizeof res);
+    if (!ids || !tag_rgb || !rgb || !seen) {
+        fprintf(stderr, "zspan-sim: out of memory (--svg)\n");
+        goto out;
+    }
+    idp.format = ZS_FMT_ID16;
+    idp.shading = ZS_SHADE_FLAT;
+    st = zs_frame_begin(r, cam, o->mode);
+    if (st == ZS_OK)
+        st = zs_frame_shading(r, &idp);
+    for (i = 0; st == ZS_OK && i < scene->count; i++)
+        st = zs_draw(r, &scene->chunks[i].mesh, model);
+    if (st == ZS_OK)
+        st = sim_render_image(r, ids, ids_stride, o->height, (int)o->band);
+    if (st != ZS_OK) {
+        core_error("--svg frame", st);
+        goto out;
+    }
+    for (y = 0; y < o->height; y++)
+        for (x = 0; x < o->width; x++) {
+            uint16_t t;
+            memcpy(&t, ids + (size_t)y * ids_stride + 2 * (size_t)x, 2);
+            if (t == 0 || seen[t])
+                continue;
+            seen[t] = 1;
+            if (sp->format == ZS_FMT_RGB888) {
+                const uint8_t *p = img + (size_t)y * stride + 3 * (size_t)x;
+                tag_rgb[t] = ((uint32_t)p[0] << 16) | ((uint32_t)p[1] << 8) | p[2];
+            } else {
+                tag_rgb[t] = palette_color((uint32_t)t - 1u);
+            }
+        }
+    for (i = 0; i < recs->n; i++) {
+        uint16_t t = recs->v[i].tag;
+        rgb[i] = seen[t] ? tag_rgb[t] : palette_color((uint32_t)t - 1u);
+    }
+    rc = sim_vr_compute(recs, o->width, o->height, &res);
+    if (rc != 0) {
+        fprintf(stderr, "zspan-sim: %s (--svg)\n",
+                rc == -2 ? "a visible region was cut into pieces of too many corners"
+                         : "out of memory");
+        rc = -1;
+        goto out;
+    }
+    rc = -1;
+    if (sim_make_parent_dirs(o->svg) != 0 ||
+        sim_vr_write_svg(o->svg, &res, recs, rgb, o->background, o->width, o->height) != 0) {
+        fprintf(stderr, "zspan-sim: cannot write %s\n", o->svg);
+        goto out;
+    }
+    if (!o->quiet) {
+        size_t regions = 0, pieces = 0;
+        for (i = 0; i < res.n; i++) {
+            regions += res.r[i].n > 0;
+            pieces += res.r[i].n;
+        }
+        printf("svg: %lu records, %lu visible regions (%lu convex pieces, %lu clip polygons), "
+               "visible area %.4f px^2 -> %s\n",
+               (unsigned long)recs->n, (unsigned long)regions, (unsigned long)pieces, res.clips,
+               res.area, o->svg);
+    }
+    rc = 0;
+out:
+    sim_vr_free(&res);
+    free(ids);
+    free(tag_rgb);
+    free(rgb);
+    free(seen);
+    return rc;
+}
+
 int sim_cmd_render(int argc, char **argv)
 {
     sim_render_opts o;
@@ -825,6 +913,9 @@ int sim_cmd_render(int argc, char **argv)
         dump = NULL;
     }
 
+    if (o.svg != NULL &&
+        svg_output(&o, &r, &cam, &sp, &scene, model_ptr, &recs, img, stride) != 0)
+        goto done;
     if (o.raycast) {
         if (raycast_output(&o, &recs, img, stride) != 0)
             goto done;

@@ -264,6 +264,7 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
     return ZS_OK;
 }
 
+#ifndef ZS_NO_MONO
 /* One row of visibility: the row machinery, or area subdivision. */
 static void visible_row(zs_renderer *r, int y, uint8_t *row)
 {
@@ -272,6 +273,7 @@ static void visible_row(zs_renderer *r, int y, uint8_t *row)
     else
         zs_raster_row(r, y, row);
 }
+#endif
 
 /* One row of a 1-bit frame: the scratch line, then dithered and packed. */
 static void mono_row(zs_renderer *r, int y, uint8_t *out)

@@ -26,6 +26,10 @@
  */
 #include "sim_run.h"
 
+#include <setjmp.h>
+#include <stddef.h>
+#include <cmocka.h>
+
 #include <math.h>
 #include <sys/stat.h>
 
@@ -620,9 +624,10 @@ static void check_raycast(const char *name, const char *file_args)
     free_image(&ii);
 }
 
-int main(void)
+static void test_all(void **state)
 {
     char path[512], args[768];
+    (void)state;
     mkdir(TOP "/build", 0777);
     mkdir(TOP "/build/tests", 0777);
     mkdir(OUT, 0777);
@@ -658,5 +663,13 @@ int main(void)
     check_svg_scene("shapes", args);
     (void)covered; /* sim_run.h's, unused here */
     printf("test_area_sim: %d checks, %d failed\n", g_checks, g_failed);
-    return g_failed != 0;
+    assert_int_equal(g_failed, 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_all),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -362,20 +362,13 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
         r->priv.state = ZS_STATE_RENDERING;
     }
     for (y = r->priv.next_row; y < y0; y++) {
-        if (r->priv.mode != ZS_MODE_WARNOCK) { /* it keeps no state between rows */
+        if (r->priv.mode != ZS_MODE_WARNOCK) /* it keeps no state between rows */
             zs_raster_row(r, y, 0);
-            if (r->priv.aa_mode)
-                zs_abuffer_row(r, y, 0);
-        }
         r->priv.line_prev_row = 0; /* no ids of the row above */
     }
     if (kind == ZS_ROWS_BYTES) {
-        for (y = y0; y < y0 + rows; y++) {
-            uint8_t *line = (uint8_t *)buf + (size_t)(y - y0) * stride;
-            zs_raster_row(r, y, line);
-            if (r->priv.aa_mode)
-                zs_abuffer_row(r, y, line);
-        }
+        for (y = y0; y < y0 + rows; y++)
+            zs_raster_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
     } else if (kind == ZS_ROWS_AREA) { /* the band as one rectangle */
         zs_warnock_rows(r, y0, rows, (uint8_t *)buf, stride);
     } else {
@@ -386,6 +379,8 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
                 mono_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
         }
     }
+    if (r->priv.aa_mode && kind != ZS_ROWS_MONO) /* the A-buffer rewrites the rows' edge pixels */
+        zs_abuffer_rows(r, y0, rows, (uint8_t *)buf, stride);
     r->priv.next_row = y0 + rows;
     r->stats.rows += (uint32_t)rows;
     if (r->priv.next_row >= (int)r->cfg.height)

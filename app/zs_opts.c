@@ -211,7 +211,16 @@ int zs_opt_fixed(const char *prog, const char *what, double v, zs_fixed *out)
         return 0;                                                                              \
     }
 
-TWO_WORDS(zs_opt_mode, zs_visibility, "--mode", "span", ZS_MODE_SPAN, "zline", ZS_MODE_ZLINE)
+int zs_opt_mode(const char *prog, const char *s, zs_visibility *out)
+{
+    static const char *const words[] = {"span", "zline", "warnock"};
+    static const zs_visibility modes[] = {ZS_MODE_SPAN, ZS_MODE_ZLINE, ZS_MODE_WARNOCK};
+    int k;
+    if (zs_opt_choice(prog, "--mode", s, words, 3, &k) != 0)
+        return -1;
+    *out = modes[k];
+    return 0;
+}
 TWO_WORDS(zs_opt_shade, zs_shading, "--shade", "flat", ZS_SHADE_FLAT, "gouraud", ZS_SHADE_GOURAUD)
 TWO_WORDS(zs_opt_wire_format, zs_format, "--format", "rgb565", ZS_FMT_RGB565_BE, "rgb666",
           ZS_FMT_RGB666)

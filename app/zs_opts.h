@@ -51,7 +51,7 @@ int zs_opt_seq_path(char *buf, size_t size, const char *pattern, long n);
 int zs_opt_up_axis(const char *prog, const char *opt, const char *s, int *out);
 
 /* The choices every renderer front end takes. */
-int zs_opt_mode(const char *prog, const char *s, zs_visibility *out);        /* span|zline */
+int zs_opt_mode(const char *prog, const char *s, zs_visibility *out); /* span|zline|warnock */
 int zs_opt_shade(const char *prog, const char *s, zs_shading *out);          /* flat|gouraud */
 int zs_opt_wire_format(const char *prog, const char *s, zs_format *out);     /* rgb565|rgb666 */
 

@@ -9,6 +9,8 @@
 #include <string.h>
 
 #include "png_out.h"
+#include "raycast.h"
+#include "regions.h"
 #include "zs_arena.h"
 #include "zs_model.h"
 #include "zs_opts.h"
@@ -31,6 +33,7 @@ static void opts_default(sim_render_opts *o)
     o->up_axis = ZS_UP_AUTO;
     o->background = 0;
     o->band = 1;
+    o->grid = 8;
 }
 
 static int parse_fog(const char *s, sim_render_opts *o)
@@ -195,8 +198,22 @@ static int parse_args(int argc, char **argv, sim_render_opts *o)
                 return SIM_EXIT_USAGE;
             o->has_rot = 1;
         } else if (OPT("--mode")) {
-            if (m < 0 || zs_opt_mode(SIM_PROG, v, &o->mode) != 0)
+            if (m < 0)
                 return SIM_EXIT_USAGE;
+            o->raycast = strcmp(v, "raycast") == 0;
+            if (o->raycast)
+                o->mode = ZS_MODE_SPAN; /* the core makes the records */
+            else if (zs_opt_mode(SIM_PROG, v, &o->mode) != 0) {
+                fprintf(stderr, "zspan-sim: --mode: or raycast (render only)\n");
+                return SIM_EXIT_USAGE;
+            }
+        } else if (OPT("--grid")) {
+            if (m < 0 || zs_opt_long(SIM_PROG, "--grid", v, 0, ZS_MAX_DIM, &o->grid) != 0)
+                return SIM_EXIT_USAGE;
+        } else if (OPT("--svg")) {
+            if (m < 0)
+                return SIM_EXIT_USAGE;
+            o->svg = v;
         } else if (OPT("--shade")) {
             static const char *const shades[] = {"flat", "gouraud", "ids"};
             if (m < 0 || zs_opt_choice(SIM_PROG, "--shade", v, shades, 3, &o->shade) != 0)
@@ -372,6 +389,8 @@ int sim_render_parse(int argc, char **argv, sim_render_opts *o)
         rc = SIM_EXIT_USAGE;
     if (rc == 0 && o->dump != NULL && sim_check_output(o->dump, "--dump-tris") != 0)
         rc = SIM_EXIT_USAGE;
+    if (rc == 0 && o->svg != NULL && sim_check_output(o->svg, "--svg") != 0)
+        rc = SIM_EXIT_USAGE;
     return rc;
 }
 
@@ -538,6 +557,160 @@ static int core_error(const char *call, zs_status st)
     return SIM_EXIT_FAIL;
 }
 
+/* --mode raycast: the frame's records ray-cast on the host (the core's own
+ * frame, in ID16, is the comparison); writes the PNG: the tags with --shade
+ * ids, else each triangle in its palette colour, unlit. Returns 0 or -1. */
+static int raycast_output(const sim_render_opts *o, const sim_rc_set *recs, const uint8_t *ids,
+                          size_t stride)
+{
+    sim_rc_image im;
+    unsigned long covered = 0, differ = 0, near = 0;
+    uint8_t *out;
+    size_t ostride;
+    int x, y, rc = -1;
+    if (sim_raycast(recs, o->width, o->height, (int)o->grid, &im) != 0) {
+        fprintf(stderr, "zspan-sim: out of memory (--mode raycast)\n");
+        return -1;
+    }
+    for (y = 0; y < o->height; y++)
+        for (x = 0; x < o->width; x++) {
+            uint16_t want, got = im.tag[(size_t)y * (size_t)o->width + (size_t)x];
+            double zs;
+            memcpy(&want, ids + (size_t)y * stride + 2 * (size_t)x, 2);
+            covered += want != 0 || got != 0;
+            if (want == got)
+                continue;
+            differ++;
+            /* a near tie: the span image's triangle is there, within 2^-20
+             * of the nearest depth the ray found */
+            if (want != 0 && got != 0 && sim_rc_depth_of(recs, want, x, y, &zs) &&
+                zs - im.z1[(size_t)y * (size_t)o->width + (size_t)x] < 1.0 / 1048576.0)
+                near++;
+        }
+    ostride = (size_t)o->width * (o->shade == SHADE_IDS ? 2u : 3u);
+    out = malloc((size_t)o->height * ostride);
+    if (out == NULL) {
+        fprintf(stderr, "zspan-sim: out of memory\n");
+        goto done;
+    }
+    for (y = 0; y < o->height; y++)
+        for (x = 0; x < o->width; x++) {
+            uint16_t t = im.tag[(size_t)y * (size_t)o->width + (size_t)x];
+            uint8_t *p = out + (size_t)y * ostride;
+            if (o->shade == SHADE_IDS) {
+                memcpy(p + 2 * (size_t)x, &t, 2);
+            } else {
+                zs_color c = t ? palette_color((uint32_t)t - 1u) : o->background;
+                p[3 * x] = (uint8_t)(c >> 16);
+                p[3 * x + 1] = (uint8_t)(c >> 8);
+                p[3 * x + 2] = (uint8_t)c;
+            }
+        }
+    if (!o->out_set && sim_make_parent_dirs(o->out) != 0)
+        goto done;
+    if ((o->shade == SHADE_IDS ? png_write_gray16(o->out, o->width, o->height, out, ostride)
+                               : png_write_rgb8(o->out, o->width, o->height, out, ostride)) != 0)
+        goto done;
+    if (!o->quiet)
+        printf("raycast: %lu records, grid %ldx%ld px, %lu ray-record tests; %lu of %lu covered "
+               "pixels differ from span mode, %lu of them near ties (depths within 2^-20), %lu "
+               "other -> %s\n",
+               (unsigned long)recs->n, o->grid, o->grid, im.tests, differ, covered, near,
+               differ - near, o->out);
+    rc = 0;
+done:
+    free(out);
+    sim_rc_image_free(&im);
+    return rc;
+}
+
+/* --svg: the visible regions of the frame's records, coloured as the image
+ * shows them (the colour of the first pixel of each tag; a tag no pixel
+ * shows gets its palette colour). The tags come from a second frame of the
+ * same draws in ID16. Returns 0 or -1. */
+static int svg_output(const sim_render_opts *o, zs_renderer *r, const zs_camera *cam,
+                      const zs_shade_params *sp, const zs_model *scene, const zs_mat34 *model,
+                      const sim_rc_set *recs, const uint8_t *img, size_t stride)
+{
+    size_t np = (size_t)o->width * (size_t)o->height, i, ids_stride = (size_t)o->width * 2;
+    uint8_t *ids = malloc(np * 2);
+    uint32_t *tag_rgb = malloc(65536 * sizeof *tag_rgb), *rgb = malloc((recs->n + 1) * sizeof *rgb);
+    uint8_t *seen = calloc(65536, 1);
+    zs_shade_params idp = *sp;
+    sim_vr_result res;
+    int rc = -1, x, y;
+    zs_status st;
+    memset(&res, 0, sizeof res);
+    if (!ids || !tag_rgb || !rgb || !seen) {
+        fprintf(stderr, "zspan-sim: out of memory (--svg)\n");
+        goto out;
+    }
+    idp.format = ZS_FMT_ID16;
+    idp.shading = ZS_SHADE_FLAT;
+    st = zs_frame_begin(r, cam, o->mode);
+    if (st == ZS_OK)
+        st = zs_frame_shading(r, &idp);
+    for (i = 0; st == ZS_OK && i < scene->count; i++)
+        st = zs_draw(r, &scene->chunks[i].mesh, model);
+    if (st == ZS_OK)
+        st = sim_render_image(r, ids, ids_stride, o->height, (int)o->band);
+    if (st != ZS_OK) {
+        core_error("--svg frame", st);
+        goto out;
+    }
+    for (y = 0; y < o->height; y++)
+        for (x = 0; x < o->width; x++) {
+            uint16_t t;
+            memcpy(&t, ids + (size_t)y * ids_stride + 2 * (size_t)x, 2);
+            if (t == 0 || seen[t])
+                continue;
+            seen[t] = 1;
+            if (sp->format == ZS_FMT_RGB888) {
+                const uint8_t *p = img + (size_t)y * stride + 3 * (size_t)x;
+                tag_rgb[t] = ((uint32_t)p[0] << 16) | ((uint32_t)p[1] << 8) | p[2];
+            } else {
+                tag_rgb[t] = palette_color((uint32_t)t - 1u);
+            }
+        }
+    for (i = 0; i < recs->n; i++) {
+        uint16_t t = recs->v[i].tag;
+        rgb[i] = seen[t] ? tag_rgb[t] : palette_color((uint32_t)t - 1u);
+    }
+    rc = sim_vr_compute(recs, o->width, o->height, &res);
+    if (rc != 0) {
+        fprintf(stderr, "zspan-sim: %s (--svg)\n",
+                rc == -2 ? "a visible region was cut into pieces of too many corners"
+                         : "out of memory");
+        rc = -1;
+        goto out;
+    }
+    rc = -1;
+    if (sim_make_parent_dirs(o->svg) != 0 ||
+        sim_vr_write_svg(o->svg, &res, recs, rgb, o->background, o->width, o->height) != 0) {
+        fprintf(stderr, "zspan-sim: cannot write %s\n", o->svg);
+        goto out;
+    }
+    if (!o->quiet) {
+        size_t regions = 0, pieces = 0;
+        for (i = 0; i < res.n; i++) {
+            regions += res.r[i].n > 0;
+            pieces += res.r[i].n;
+        }
+        printf("svg: %lu records, %lu visible regions (%lu convex pieces, %lu clip polygons), "
+               "visible area %.4f px^2 -> %s\n",
+               (unsigned long)recs->n, (unsigned long)regions, (unsigned long)pieces, res.clips,
+               res.area, o->svg);
+    }
+    rc = 0;
+out:
+    sim_vr_free(&res);
+    free(ids);
+    free(tag_rgb);
+    free(rgb);
+    free(seen);
+    return rc;
+}
+
 int sim_cmd_render(int argc, char **argv)
 {
     sim_render_opts o;
@@ -553,11 +726,13 @@ int sim_cmd_render(int argc, char **argv)
     void *arena = NULL;
     uint8_t *img = NULL;
     FILE *dump = NULL;
+    sim_rc_set recs;
     size_t arena_size, stride, i;
     unsigned bpp;
     int rc = SIM_EXIT_FAIL, f;
 
     memset(&scene, 0, sizeof scene);
+    memset(&recs, 0, sizeof recs);
     f = sim_render_parse(argc, argv, &o);
     if (f != 0 || o.done) {
         sim_render_opts_free(&o);
@@ -711,6 +886,10 @@ int sim_cmd_render(int argc, char **argv)
             }
         }
     }
+    if (o.raycast) { /* the core's frame in tags: what the rays must agree with */
+        sp.format = ZS_FMT_ID16;
+        sp.shading = ZS_SHADE_FLAT;
+    }
     st = zs_frame_shading(&r, &sp);
     if (st != ZS_OK) {
         rc = core_error("zs_frame_shading", st);
@@ -732,6 +911,10 @@ int sim_cmd_render(int argc, char **argv)
         }
         zs_set_setup_hook(&r, dump_hook, dump);
     }
+    if (o.raycast || o.svg != NULL) { /* the records, for the host's own visibility */
+        recs.dump = dump;
+        zs_set_setup_hook(&r, sim_rc_hook, &recs);
+    }
     for (i = 0; i < scene.count; i++) {
         if (o.n_opacity) {
             st = zs_draw_opacity(&r, o.opacity[i < (size_t)o.n_opacity ? i : (size_t)o.n_opacity - 1]);
@@ -747,6 +930,10 @@ int sim_cmd_render(int argc, char **argv)
         }
     }
     zs_set_setup_hook(&r, NULL, NULL);
+    if (recs.failed) {
+        fprintf(stderr, "zspan-sim: out of memory\n");
+        goto done;
+    }
     if (o.svg_lines != NULL && write_svg_lines(&o, &scene, model_ptr, &cam) != 0)
         goto done;
 
@@ -772,9 +959,15 @@ int sim_cmd_render(int argc, char **argv)
         dump = NULL;
     }
 
-    if (!o.out_set && sim_make_parent_dirs(o.out) != 0)
+    if (o.svg != NULL &&
+        svg_output(&o, &r, &cam, &sp, &scene, model_ptr, &recs, img, stride) != 0)
+        goto done;
+    if (o.raycast) {
+        if (raycast_output(&o, &recs, img, stride) != 0)
+            goto done;
+    } else if (!o.out_set && sim_make_parent_dirs(o.out) != 0) {
         goto done; /* only the default's out/ is created */
-    if (o.shade == SHADE_IDS) {
+    } else if (o.shade == SHADE_IDS) {
         if (png_write_gray16(o.out, o.width, o.height, img, stride) != 0)
             goto done;
     } else if (png_write_rgb8(o.out, o.width, o.height, img, stride) != 0) {
@@ -810,6 +1003,7 @@ done:
         fclose(dump);
     free(img);
     free(arena);
+    sim_rc_free(&recs);
     zs_model_free(&scene);
     sim_render_opts_free(&o);
     return rc;

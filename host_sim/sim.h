@@ -64,6 +64,9 @@ typedef struct sim_render_opts {
     int out_set;
     const char *dump;
     const char *svg_lines; /* --svg-lines FILE: the visible feature edges as SVG */
+    int raycast;          /* --mode raycast: visibility by a host ray caster */
+    long grid;            /* --grid N: its cells, N x N pixels (0: none) */
+    const char *svg;      /* --svg FILE: the visible regions (Weiler-Atherton) */
     zs_color background;
     int has_light;
     double light[4];

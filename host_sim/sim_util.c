@@ -24,6 +24,9 @@ void sim_print_stats(FILE *f, const zs_stats *s)
             (unsigned long)s->rows, (unsigned long)s->spans, (unsigned long)s->max_active_edges,
             (unsigned long)s->depth_evals, (unsigned long)s->crossings,
             (unsigned long)s->pixels_shaded);
+    if (s->windows)
+        fprintf(f, "  warnock: %lu windows visited, %lu pixel decisions\n",
+                (unsigned long)s->windows, (unsigned long)s->pixel_decisions);
 }
 
 /* Longest path accepted (the Linux PATH_MAX less its terminator). */
@@ -106,7 +109,7 @@ uint32_t sim_fnv1a(const void *data, size_t n)
 
 const char *sim_mode_name(zs_visibility mode)
 {
-    return mode == ZS_MODE_ZLINE ? "zline" : "span";
+    return mode == ZS_MODE_WARNOCK ? "warnock" : mode == ZS_MODE_ZLINE ? "zline" : "span";
 }
 
 typedef struct band_sink {

@@ -88,7 +88,7 @@ static int64_t min3_64(int64_t a, int64_t b, int64_t c)
 
 /* Depth plane of the triangle s (canonical order, sorted by y), origin at
  * the pixel centre (ox, oy) next to s[0]; marks it steep where needed. */
-static void depth_plane(zs_active *a, const zs_vert *s[3], const zs_recip *area2, int32_t ox,
+static ZS_INLINE_ALWAYS void depth_plane(zs_active *a, const zs_vert *s[3], const zs_recip *area2, int32_t ox,
                         int32_t oy, int32_t y)
 {
     int64_t dx1 = (int64_t)s[1]->x - s[0]->x, dy1 = (int64_t)s[1]->y - s[0]->y;
@@ -302,4 +302,18 @@ void zs_continue_edge(zs_renderer *r, uint16_t ai, int32_t y)
     ei = new_edge(r, ai, left_side, s[1], s[2], y);
     if (left_side && (a->flags & ZS_ACT_STEEP))
         zs_anchor_depth(r, a, zs_clampi(r->priv.edges[ei].x, 0, r->cfg.width), y);
+}
+
+/* Warnock mode and picking (centre.c) evaluate records without activating
+ * them: the same canonical order and plane, so the same depths (cold: off
+ * the hot code). */
+ZS_COLD void zs_canonical_vertices(const zs_renderer *r, const zs_tri *t, const zs_vert *v[3])
+{
+    sort_canonical(r, t, v);
+}
+
+ZS_COLD void zs_record_depth_plane(zs_active *a, const zs_vert *s[3], const zs_recip *area2, int32_t ox,
+                           int32_t oy, int32_t y)
+{
+    depth_plane(a, s, area2, ox, oy, y);
 }

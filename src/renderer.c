@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The renderer context: configuration, arena layout, frame life cycle and
  * the band API. */
+#include "zs_centre.h"
 #include "zs_mono.h"
 
 zs_config zs_config_default(uint16_t width, uint16_t height, uint16_t max_triangles,
@@ -99,6 +100,7 @@ static ZS_NOINLINE void reset_shading(zs_renderer *r)
     r->shade = zs_shade_default();
     r->priv.bpp = (uint8_t)zs_format_bytes(r->shade.format);
     r->priv.out_format = (uint8_t)r->shade.format;
+    r->priv.rows_kind = r->priv.mode == ZS_MODE_WARNOCK ? ZS_ROWS_AREA : ZS_ROWS_BYTES;
 }
 
 zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_config *cfg)
@@ -193,7 +195,7 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
         return ZS_ERR_NULL;
     if (r->priv.state == ZS_STATE_NONE)
         return ZS_ERR_STATE;
-    if (mode != ZS_MODE_SPAN && mode != ZS_MODE_ZLINE)
+    if (mode != ZS_MODE_SPAN && mode != ZS_MODE_ZLINE && mode != ZS_MODE_WARNOCK)
         return ZS_ERR_MODE;
     if (mode == ZS_MODE_ZLINE && (r->cfg.flags & ZS_CFG_NO_ZLINE))
         return ZS_ERR_MODE;
@@ -226,6 +228,7 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
     r->priv.n_tris = 0;
     r->priv.tag_counter = 0;
     r->priv.next_row = 0;
+    r->priv.tall_rows = 0xFFFFu; /* counted when Warnock mode or zs_pick needs it */
     zs_abuffer_frame(r);
     memset(r->priv.buckets, 0xFF, (size_t)r->cfg.height * 2u);
     if (r->priv.draw_starts)
@@ -280,8 +283,22 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
     if (zs_format_is_mono(p->format)) /* the stages render a scratch line */
         r->shade.format = (p->mono & ZS_MONO_LINES) ? ZS_FMT_ID16 : ZS_FMT_GRAY8;
     r->priv.bpp = (uint8_t)zs_format_bytes(r->shade.format);
+    r->priv.rows_kind = zs_format_is_mono(p->format)           ? ZS_ROWS_MONO
+                        : r->priv.mode == ZS_MODE_WARNOCK ? ZS_ROWS_AREA
+                                                          : ZS_ROWS_BYTES;
     return ZS_OK;
 }
+
+#ifndef ZS_NO_MONO
+/* One row of visibility: the row machinery, or area subdivision. */
+static void visible_row(zs_renderer *r, int y, uint8_t *row)
+{
+    if (r->priv.mode == ZS_MODE_WARNOCK)
+        zs_warnock_rows(r, y, 1, row, 0);
+    else
+        zs_raster_row(r, y, row);
+}
+#endif
 
 /* One row of a 1-bit frame: the scratch line, then dithered and packed. */
 static void mono_row(zs_renderer *r, int y, uint8_t *out)
@@ -293,11 +310,11 @@ static void mono_row(zs_renderer *r, int y, uint8_t *out)
 #else
     uint8_t *grey = r->priv.mono_grey;
     if (r->shade.mono & ZS_MONO_LINES) {
-        zs_raster_row(r, y, (uint8_t *)r->priv.line_ids[0]);
+        visible_row(r, y, (uint8_t *)r->priv.line_ids[0]);
         zs_lines_row(r, y, grey);
     } else {
-        zs_raster_row(r, y, grey);
-        if (r->priv.aa_mode)
+        visible_row(r, y, grey);
+        if (r->priv.aa_mode) /* span mode only */
             zs_abuffer_row(r, y, grey);
     }
     zs_mono_row(r, y, grey, out);
@@ -306,7 +323,7 @@ static void mono_row(zs_renderer *r, int y, uint8_t *out)
 
 zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t stride)
 {
-    int y, mono;
+    int y, kind;
     size_t need, units;
     if (!r || !buf)
         return ZS_ERR_NULL;
@@ -316,8 +333,8 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
         rows > (int)r->cfg.height - y0)
         return ZS_ERR_ROW;
     /* byte formats first: the common call costs no more than before */
-    mono = r->priv.out_format >= (uint8_t)ZS_FMT_COUNT;
-    if (!mono) {
+    kind = r->priv.rows_kind; /* per frame: byte rows, 1-bit rows, or Warnock */
+    if (kind != ZS_ROWS_MONO) {
         need = (size_t)r->cfg.width * r->priv.bpp;
         units = (size_t)rows;
     } else {
@@ -334,7 +351,7 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
     if (r->priv.state == ZS_STATE_OPEN) {
         zs_raster_begin(r);
 #ifndef ZS_NO_MONO
-        if (mono) {
+        if (kind == ZS_ROWS_MONO) {
             zs_mono_begin(r);
             if (r->shade.mono & ZS_MONO_LINES)
                 zs_lines_begin(r);
@@ -345,18 +362,24 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
         r->priv.state = ZS_STATE_RENDERING;
     }
     for (y = r->priv.next_row; y < y0; y++) {
-        zs_raster_row(r, y, 0);
+        if (r->priv.mode != ZS_MODE_WARNOCK) /* it keeps no state between rows */
+            zs_raster_row(r, y, 0);
         r->priv.line_prev_row = 0; /* no ids of the row above */
     }
-    for (y = y0; y < y0 + rows; y++) {
-        if (!mono)
+    if (kind == ZS_ROWS_BYTES) {
+        for (y = y0; y < y0 + rows; y++)
             zs_raster_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
-        else if (r->priv.out_format == ZS_FMT_MONO_PAGE) /* a page holds 8 rows */
-            mono_row(r, y, (uint8_t *)buf + (size_t)(y / 8 - y0 / 8) * stride);
-        else
-            mono_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
+    } else if (kind == ZS_ROWS_AREA) { /* the band as one rectangle */
+        zs_warnock_rows(r, y0, rows, (uint8_t *)buf, stride);
+    } else {
+        for (y = y0; y < y0 + rows; y++) {
+            if (r->priv.out_format == ZS_FMT_MONO_PAGE) /* a page holds 8 rows */
+                mono_row(r, y, (uint8_t *)buf + (size_t)(y / 8 - y0 / 8) * stride);
+            else
+                mono_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
+        }
     }
-    if (r->priv.aa_mode && !mono) /* the A-buffer rewrites the rows' edge pixels */
+    if (r->priv.aa_mode && kind != ZS_ROWS_MONO) /* the A-buffer rewrites the rows' edge pixels */
         zs_abuffer_rows(r, y0, rows, (uint8_t *)buf, stride);
     r->priv.next_row = y0 + rows;
     r->stats.rows += (uint32_t)rows;

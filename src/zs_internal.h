@@ -8,6 +8,10 @@
 
 #define ZS_NONE 0xFFFFu
 
+/* zs_render_rows' paths (priv.rows_kind): the row machinery into byte
+ * rows, into a 1-bit format's scratch line, or Warnock mode's rectangles. */
+enum { ZS_ROWS_BYTES = 0, ZS_ROWS_MONO, ZS_ROWS_AREA };
+
 /* Renderer states. */
 enum { ZS_STATE_NONE = 0, ZS_STATE_READY, ZS_STATE_OPEN, ZS_STATE_RENDERING, ZS_STATE_DONE };
 
@@ -103,7 +107,9 @@ typedef char zs_check_acolor[(sizeof(zs_active_color) == ZS_ACTIVE_COLOR_BYTES) 
 #if defined(__GNUC__)
 #define ZS_COLD __attribute__((cold, noinline))
 #define ZS_NOINLINE __attribute__((noinline)) /* off a caller's frame, or one copy */
+#define ZS_INLINE_ALWAYS __attribute__((always_inline)) inline /* a second caller elsewhere */
 #else
+#define ZS_INLINE_ALWAYS
 #define ZS_COLD
 #define ZS_NOINLINE
 #endif
@@ -213,6 +219,11 @@ void zs_anchor_depth(const zs_renderer *r, zs_active *a, int32_t xa, int32_t y);
 void zs_make_plane(zs_renderer *r, zs_active *a, int32_t y);
 /* Appends the lower short edge of active triangle ai, starting at row y. */
 void zs_continue_edge(zs_renderer *r, uint16_t ai, int32_t y);
+/* The same for area.c (Warnock mode, picking): canonical vertex order and
+ * depth plane of a record, as zs_activate makes them. */
+void zs_canonical_vertices(const zs_renderer *r, const zs_tri *t, const zs_vert *v[3]);
+void zs_record_depth_plane(zs_active *a, const zs_vert *s[3], const zs_recip *area2, int32_t ox,
+                           int32_t oy, int32_t y);
 /* raster.c: rows, edges, the active edge list */
 void zs_raster_begin(zs_renderer *r);
 void zs_raster_row(zs_renderer *r, int y, uint8_t *row); /* row NULL: step only */

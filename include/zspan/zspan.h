@@ -371,7 +371,10 @@ zs_status zs_texture_check(const zs_texture *t);
 
 typedef enum zs_visibility {
     ZS_MODE_SPAN = 0,   /* spanning scanline: one depth decision per span */
-    ZS_MODE_ZLINE = 1   /* scanline z-buffer: a depth per pixel of the row */
+    ZS_MODE_ZLINE = 1,  /* scanline z-buffer: a depth per pixel of the row */
+    ZS_MODE_WARNOCK = 3 /* area subdivision (Warnock) of each band's rectangle:
+                           the same image as the other modes (README: Warnock
+                           mode); zs_stats.windows, .pixel_decisions */
 } zs_visibility;
 
 typedef enum zs_shading {
@@ -496,6 +499,10 @@ typedef struct zs_stats {
     uint32_t depth_evals;      /* plane evaluations for visibility */
     uint32_t crossings;        /* penetration crossings split inside a row */
     uint32_t pixels_shaded;    /* pixel writes (== width * rows: each pixel once) */
+    uint32_t windows;          /* ZS_MODE_WARNOCK: windows visited (the band
+                                  rectangles and every quadrant split off) */
+    uint32_t pixel_decisions;  /* ZS_MODE_WARNOCK: one-pixel windows decided by
+                                  the pixel-centre rule */
     /* A-buffer (zs_frame_antialias; 0 when it is off) */
     uint32_t aa_pixels;        /* pixels resolved from sub-samples */
     uint32_t aa_fragments;     /* fragments (triangle, mask) they were resolved from */
@@ -575,6 +582,9 @@ typedef struct zs_renderer_private {
     uint32_t tex_serial;              /* frames begun (texture planes' freshness) */
     zs_setup_hook_fn setup_hook;
     void *setup_hook_user;
+    uint16_t tall_rows;               /* Warnock, picking: most rows a record spans
+                                         (0xFFFF: not yet counted this frame) */
+    uint8_t rows_kind;                /* how zs_render_rows makes rows this frame */
     /* A-buffer (abuffer.c) */
     struct zs_aa_state *aa;           /* its pools; NULL without ZS_CFG_ABUFFER */
     uint8_t aa_mode;                  /* zs_aa_mode of the frame */
@@ -673,6 +683,35 @@ zs_status zs_draw_opacity(zs_renderer *r, uint8_t opacity);
  * zs_draw with its tag, the snapped screen vertices (x0,y0,x1,y1,x2,y2 in
  * 28.4 pixels, y down) and window depths (Q2.30). NULL disables. */
 void zs_set_setup_hook(zs_renderer *r, zs_setup_hook_fn fn, void *user);
+
+/* ------------------------------------------------------------------ */
+/* Picking (issue 15)                                                   */
+/* ------------------------------------------------------------------ */
+
+#define ZS_PICK_NONE 0xFFFFu
+
+/* What zs_pick found at a pixel. */
+typedef struct zs_pick_hit {
+    uint16_t record;   /* the visible triangle record (0 .. stats.records - 1,
+                          in submission order), ZS_PICK_NONE for background */
+    uint16_t tag;      /* its tag (what ZS_FMT_ID16 writes: 1 + the triangles
+                          submitted before it, so draw call and index follow
+                          from tris_submitted noted before each zs_draw); only
+                          in an ID16 frame (records keep colours otherwise): 0 */
+    uint32_t depth;    /* window depth at the pixel centre, Q2.30 (depth_q40 >> 10) */
+    int64_t depth_q40; /* the depth the renderer decided by (Q40), 0 for background */
+} zs_pick_hit;
+
+/* Which stored triangle is visible at the centre of pixel (x, y), by the
+ * renderer's own rule (top-left fill, the exact depth plane, ties to the
+ * record submitted first): the pixel ZS_FMT_ID16 shows. Call once the
+ * frame's rendering has begun (its draws are final) and before the next
+ * zs_frame_begin. Work: the records whose first row lies within the tallest
+ * record's height above y (about those crossing row y), no frame buffer.
+ * ZS_ERR_ARGUMENT for a pixel off the screen, ZS_ERR_STATE before rendering,
+ * ZS_ERR_CAPACITY (hit still filled) when the frame skipped records
+ * (stats.records_skipped): the image may then differ from the answer. */
+zs_status zs_pick(zs_renderer *r, int x, int y, zs_pick_hit *hit);
 
 #ifdef __cplusplus
 }

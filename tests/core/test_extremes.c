@@ -61,12 +61,12 @@ static void test_near_plane(void **state)
         zt_scene_reset(&sc);
         zt_scene_random(&g, &sc, (int)zt_range(&g, 5, 30), ZT_SC_NEAR | ZT_SC_PLAIN, 0.5);
         zs_mesh m = zt_scene_mesh(&sc, 1, 0);
-        for (int mode = 0; mode < 2; mode++) {
-            zt_guarded_frame(&c, &cam, (zs_visibility)mode, &m, 1, NULL, f, 1 + n % 7);
+        for (int mode = 0; mode < ZT_NMODES; mode++) {
+            zt_guarded_frame(&c, &cam, ZT_MODE(mode), &m, 1, NULL, f, 1 + n % 7);
             ZT_ST(f->draw_st, ZS_OK);
             char what[96];
             snprintf(what, sizeof what, "near-plane scene %d (%s, seed %llx)", n,
-                     mode ? "zline" : "span", (unsigned long long)SEED);
+                     ZT_MODE_NAME(mode), (unsigned long long)SEED);
             bad += zt_vs_raycast(f, what);
             if (mode == 0) clipped += f->st.tris_clipped;
             /* clipped pieces never reach in front of the near plane: depth >= 0 */
@@ -104,8 +104,8 @@ static void test_steep_sliver(void **state)
     zt_cast cast;
     zt_cast_alloc(&cast, 96, 80);
     unsigned long bad = 0;
-    for (int mode = 0; mode < 2; mode++) {
-        ZT_ST(zt_frame(&c, &cam, (zs_visibility)mode, NULL, &m, 1, &recs, img, 80), ZS_OK);
+    for (int mode = 0; mode < ZT_NMODES; mode++) {
+        ZT_ST(zt_frame(&c, &cam, ZT_MODE(mode), NULL, &m, 1, &recs, img, 80), ZS_OK);
         zt_raycast(&recs, &cast);
         for (int y = 0; y < 80; y++)
             for (int x = 0; x < 96; x++) {
@@ -115,7 +115,7 @@ static void test_steep_sliver(void **state)
                 if (bad++ < 2)
                     print_error("steep sliver (%s): pixel (%d,%d) ID16 %u, ray caster %u (z %.6f "
                                 "vs %.6f)\n",
-                                mode ? "zline" : "span", x, y, id, cast.owner[p], cast.z1[p],
+                                ZT_MODE_NAME(mode), x, y, id, cast.owner[p], cast.z1[p],
                                 cast.z2[p]);
             }
     }
@@ -156,8 +156,8 @@ static void test_rejected(void **state)
     }
     zs_mesh m = zt_scene_mesh(&sc, 1, 0);
     zt_gframe *f = zt_gframe_new(RW, RH);
-    for (int mode = 0; mode < 2; mode++) {
-        zt_guarded_frame(&c, &cam, (zs_visibility)mode, &m, 1, NULL, f, 5);
+    for (int mode = 0; mode < ZT_NMODES; mode++) {
+        zt_guarded_frame(&c, &cam, ZT_MODE(mode), &m, 1, NULL, f, 5);
         ZT_ST(f->draw_st, ZS_OK);
         ZT_CHECK(zt_gframe_empty(f), "a triangle outside the view volume was drawn");
         ZT_CHECK(f->recs.n == 0, "%zu records stored for triangles outside the view volume",
@@ -223,12 +223,12 @@ static void test_extremes(void **state)
         zs_fixed nearz = n % 5 == 0 ? 1 : n % 5 == 1 ? ZS_FX(1) / 100 : ZS_FX(1) / 2;
         zs_fixed farz = n % 2 ? ZS_FX(32767) : ZS_FX(100);
         zt_camera_std(&cam, nearz, farz);
-        for (int mode = 0; mode < 2; mode++) {
-            zt_guarded_frame(&c, &cam, (zs_visibility)mode, &m, 1, &model, f, 1 + n % 9);
+        for (int mode = 0; mode < ZT_NMODES; mode++) {
+            zt_guarded_frame(&c, &cam, ZT_MODE(mode), &m, 1, &model, f, 1 + n % 9);
             ZT_ST(f->draw_st, ZS_OK);
             char what[96];
             snprintf(what, sizeof what, "extremes case %d (%s, seed %llx)", n,
-                     mode ? "zline" : "span", (unsigned long long)SEED);
+                     ZT_MODE_NAME(mode), (unsigned long long)SEED);
             bad += zt_vs_raycast(f, what);
             for (size_t i = 0; i < f->recs.n; i++)
                 for (int k = 0; k < 3; k++)
@@ -271,8 +271,8 @@ static void test_degenerate(void **state)
     int nt = (int)sc.nt;
     zs_mesh m = zt_scene_mesh(&sc, 1, 0);
     zt_gframe *f = zt_gframe_new(RW, RH);
-    for (int mode = 0; mode < 2; mode++) {
-        zt_guarded_frame(&c, &cam, (zs_visibility)mode, &m, 1, NULL, f, 3);
+    for (int mode = 0; mode < ZT_NMODES; mode++) {
+        zt_guarded_frame(&c, &cam, ZT_MODE(mode), &m, 1, NULL, f, 3);
         ZT_ST(f->draw_st, ZS_OK);
         ZT_CHECK(zt_gframe_empty(f), "a degenerate triangle was drawn");
         ZT_CHECK(f->recs.n == 0, "%zu records stored for zero-area triangles", f->recs.n);
@@ -296,8 +296,8 @@ static void both_modes(zt_ctx *c, const zs_camera *cam, const zs_mesh *m, const 
         sp.shading = f ? ZS_SHADE_GOURAUD : ZS_SHADE_FLAT;
         unsigned bpp = zs_format_bytes(sp.format);
         zs_stats sa;
-        for (int mode = 0; mode < 2; mode++) {
-            ZT_STN(zs_frame_begin(&c->r, cam, (zs_visibility)mode), ZS_OK);
+        for (int mode = 0; mode < ZT_NMODES; mode++) {
+            ZT_STN(zs_frame_begin(&c->r, cam, ZT_MODE(mode)), ZS_OK);
             ZT_STN(zs_frame_shading(&c->r, &sp), ZS_OK);
             zs_status st = zs_draw(&c->r, m, model);
             zt_checks++;
@@ -307,13 +307,14 @@ static void both_modes(zt_ctx *c, const zs_camera *cam, const zs_mesh *m, const 
             zt_check_accounting(zs_frame_stats(&c->r), &c->cfg);
             if (mode == 0)
                 sa = *zs_frame_stats(&c->r);
-            else
+            else {
                 ZT_CHECK(sa.records == zs_frame_stats(&c->r)->records &&
                              sa.saturated == zs_frame_stats(&c->r)->saturated,
                          "%s: the two modes stored differently", what);
+                ZT_CHECK(memcmp(a, b, (size_t)W * H * bpp) == 0, "%s: span != %s (format %d)",
+                         what, ZT_MODE_NAME(mode), (int)sp.format);
+            }
         }
-        ZT_CHECK(memcmp(a, b, (size_t)W * H * bpp) == 0, "%s: span != zline (format %d)", what,
-                 (int)sp.format);
     }
 }
 
@@ -398,7 +399,7 @@ static unsigned long needle(zt_ctx *c, zt_scene *sc, const int32_t q[6], int mod
     zt_scene_tri(sc, a, b, d, 0);
     zt_scene_tri(sc, a, d, b, 0); /* one of the two windings is front-facing */
     zs_mesh m = zt_scene_mesh(sc, 0, 0);
-    ZT_ST(zt_frame(c, &cam, (zs_visibility)mode, NULL, &m, 1, &recs, img, 3), ZS_OK);
+    ZT_ST(zt_frame(c, &cam, ZT_MODE(mode), NULL, &m, 1, &recs, img, 3), ZS_OK);
     unsigned long bad = 0;
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++) {
@@ -408,7 +409,7 @@ static unsigned long needle(zt_ctx *c, zt_scene *sc, const int32_t q[6], int mod
             int got = zt_id_at(img, W, x, y) != 0;
             if (want != got && bad++ < 2)
                 print_error("needle %d %d %d %d %d %d (%s): pixel (%d,%d) drawn %d, reference %d\n",
-                            q[0], q[1], q[2], q[3], q[4], q[5], mode ? "zline" : "span", x, y, got,
+                            q[0], q[1], q[2], q[3], q[4], q[5], ZT_MODE_NAME(mode), x, y, got,
                             want);
         }
     zt_check_accounting(zs_frame_stats(&c->r), &c->cfg);
@@ -448,7 +449,7 @@ static void test_needles(void **state)
         } else {     /* sliver: a vertex 1/16 px off the middle of the long edge */
             q[4] = (x0 + x1) / 2 + dx; q[5] = (y0 + y1) / 2 + dy;
         }
-        for (int mode = 0; mode < 2; mode++, n++)
+        for (int mode = 0; mode < ZT_NMODES; mode++, n++)
             bad += needle(&c, &sc, q, mode);
     }
     zt_scene_free(&sc);

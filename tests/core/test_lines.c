@@ -565,12 +565,12 @@ static void test_lines_vs_oracle(void **state)
         for (int y = 0; y < H; y++)
             for (int x = 0; x < W; x++) on[y * W + x] = (uint8_t)px_on(ref, ZS_FMT_MONO_MSB, x, y);
         /* the same drawing in the other mode, layout and band heights */
-        for (int v = 0; v < 4; v++) {
+        for (int v = 0; v < 6; v++) {
             zs_format fmt = (v & 1) ? ZS_FMT_MONO_MSB : ZS_FMT_MONO_PAGE;
-            int band = v == 0 ? 8 : v == 1 ? 1 : v == 2 ? 16 : 7;
+            int band = v == 0 ? 8 : v == 1 ? 1 : v == 2 ? 16 : v == 3 ? 7 : v == 4 ? 24 : 5;
+            zs_visibility mode = v >= 4 ? ZS_MODE_WARNOCK : v >= 2 ? ZS_MODE_ZLINE : ZS_MODE_SPAN;
             memset(img, 0, W * H);
-            ZT_ST(draw_lines(&c, &s, v >= 2 ? ZS_MODE_ZLINE : ZS_MODE_SPAN, fmt, img, band),
-                  ZS_OK);
+            ZT_ST(draw_lines(&c, &s, mode, fmt, img, band), ZS_OK);
             for (int y = 0; y < H; y++)
                 for (int x = 0; x < W; x++)
                     ZT_CHECK(px_on(img, fmt, x, y) == on[y * W + x],

@@ -1,11 +1,12 @@
 /* SPDX-License-Identifier: MIT */
 /* LIBS: -lassimp */
 /*
- * test_models: span == zline, byte for byte, on real meshes from Debian's
+ * test_models: span == zline == Warnock, byte for byte, on real meshes from Debian's
  * assimp-testmodels (loaded with assimp's C API), normalised to the unit
  * sphere and seen from several camera angles (one close enough to cut the
  * near plane), at 160x120, flat and Gouraud, lit, in RGB565_BE and ID16.
  * A missing model file is skipped with a message (at least one must load).
+ * In the ID16 frames zs_pick must name the pixel's tag at every pixel.
  */
 #include "zt_test.h"
 
@@ -25,6 +26,7 @@ static const char *k_models[] = {
     "/usr/share/assimp/models/OBJ/spider.obj",
 };
 
+static unsigned long g_warnock_bytes, g_windows, g_picks, g_pick_records;
 static unsigned long g_loaded, g_renders, g_tris, g_bytes, g_covered, g_clipped;
 
 typedef struct model {
@@ -129,7 +131,7 @@ static void test_models(void **state)
     zt_ctx c;
     zt_ctx_init(&c, W, H, 12000, 24000, 4096);
     size_t cap = (size_t)W * H * 2;
-    uint8_t *a = malloc(cap), *b = malloc(cap);
+    uint8_t *a = malloc(cap), *b = malloc(cap), *wn = malloc(cap);
     for (size_t fi = 0; fi < sizeof k_models / sizeof k_models[0]; fi++) {
         model md;
         int st = load(k_models[fi], &md);
@@ -177,13 +179,33 @@ static void test_models(void **state)
                 zs_mesh mm = m;
                 mm.vertex_normals = (look & 2) ? md.nrm : NULL;
                 mm.vertex_colors = (view % 3 == 0) ? md.vcol : NULL;
-                for (int mode = 0; mode < 2; mode++) {
-                    uint8_t *img = mode ? b : a;
+                static const zs_visibility modes[] = {ZS_MODE_SPAN, ZS_MODE_ZLINE, ZS_MODE_WARNOCK};
+                static const int warnock_bands[] = {3, 8, 20, H};
+                for (int mode = 0; mode < 3; mode++) {
+                    uint8_t *img = mode == 2 ? wn : mode ? b : a;
+                    int band = mode == 2 ? warnock_bands[(view + look) % 4] : mode ? 1 : 8;
                     memset(img, mode ? 0x11 : 0x22, cap);
-                    ZT_ST(zs_frame_begin(&c.r, &cam, (zs_visibility)mode), ZS_OK);
+                    ZT_ST(zs_frame_begin(&c.r, &cam, modes[mode]), ZS_OK);
                     ZT_ST(zs_frame_shading(&c.r, &sp), ZS_OK);
                     ZT_ST(zs_draw(&c.r, &mm, &rot), ZS_OK);
-                    ZT_ST(zt_render_rows_all(&c.r, img, W, H, sp.format, mode ? 1 : 8), ZS_OK);
+                    ZT_ST(zt_render_rows_all(&c.r, img, W, H, sp.format, band), ZS_OK);
+                    if (mode == 2)
+                        g_windows += zs_frame_stats(&c.r)->windows;
+                    if (mode == 2 && sp.format == ZS_FMT_ID16) {
+                        /* picking names what the ID16 image shows, at every pixel */
+                        for (int y = 0; y < H; y++)
+                            for (int x = 0; x < W; x++) {
+                                zs_pick_hit hit;
+                                ZT_ST(zs_pick(&c.r, x, y, &hit), ZS_OK);
+                                uint16_t id = zt_id_at(a, W, x, y);
+                                ZT_CHECK(hit.tag == id && (hit.record == ZS_PICK_NONE) == (id == 0),
+                                         "%s view %d: pick (%d,%d) says tag %u (record %u), the "
+                                         "ID16 image %u", k_models[fi], view, x, y, hit.tag,
+                                         hit.record, id);
+                                g_picks++;
+                                g_pick_records += id != 0;
+                            }
+                    }
                     const zs_stats *s = zs_frame_stats(&c.r);
                     ZT_CHECK(s->tris_dropped == 0 && s->records_skipped == 0 && s->verts_dropped == 0,
                              "%s: pools too small for the test", k_models[fi]);
@@ -197,6 +219,12 @@ static void test_models(void **state)
                             "%02x vs %02x",
                             k_models[fi], view, look, d, (d / 2) % W, (d / 2) / W, a[d], b[d]);
                 g_bytes += n;
+                d = zt_first_diff(a, wn, n);
+                if (d >= 0)
+                    ZT_FAIL("%s view %d look %d: span and Warnock differ at byte %ld (pixel %ld,%ld): "
+                            "%02x vs %02x",
+                            k_models[fi], view, look, d, (d / 2) % W, (d / 2) / W, a[d], wn[d]);
+                g_warnock_bytes += n;
                 if (sp.format == ZS_FMT_ID16)
                     for (int i = 0; i < W * H; i++) g_covered += zt_id_at(a, W, i % W, i / W) != 0;
             }
@@ -206,6 +234,7 @@ static void test_models(void **state)
     }
     free(a);
     free(b);
+    free(wn);
     zt_ctx_free(&c);
     ZT_CHECK(g_loaded > 0, "no model could be loaded");
 }
@@ -218,8 +247,11 @@ int main(void)
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     fflush(stderr);
     printf("test_models: %lu models loaded (%lu triangles), %lu renders at %dx%d, %lu bytes span == "
-           "zline, %lu covered pixels in ID16 frames, %lu triangles clipped; %d failed\n",
-           g_loaded, g_tris, g_renders, W, H, g_bytes, g_covered, g_clipped, rc);
+           "zline, %lu bytes span == Warnock (%lu windows), %lu picks equal to the ID16 pixel "
+           "(%lu on a triangle), %lu covered pixels in ID16 frames, %lu triangles clipped; %d "
+           "failed\n",
+           g_loaded, g_tris, g_renders, W, H, g_bytes, g_warnock_bytes, g_windows, g_picks,
+           g_pick_records, g_covered, g_clipped, rc);
     fflush(stdout);
     return rc;
 }

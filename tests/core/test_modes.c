@@ -24,6 +24,7 @@
 #define NSCENES 600
 #define SEED 0x30DE5AAA00000005ull
 
+static unsigned long g_windows, g_pixel_decisions, g_warnock;
 static unsigned long g_id_covered, g_id_px, g_renders, g_scenes, g_tris, g_bytes, g_crossings, g_packed;
 
 static void look(zt_rng *g, int k, zs_shade_params *sp)
@@ -129,15 +130,39 @@ static void test_span_equals_zline(void **state)
             }
             g_bytes += n;
         }
+        /* Warnock mode (area subdivision of each band), the third mode */
+        for (int v = 0; v < 5; v++) {
+            int band = v < 4 ? bands[v] : 8;
+            memset(img, 0xA5, cap);
+            ZT_ST(frame(&c, &cam, ZS_MODE_WARNOCK, &sp, &m, img, band, v == 4, 0), ZS_OK);
+            const zs_stats *st = zs_frame_stats(&c.r);
+            g_windows += st->windows;
+            g_pixel_decisions += st->pixel_decisions;
+            ZT_CHECK(st->pixels_shaded == W * H, "scene %d: Warnock wrote %u pixels, not %d", k,
+                     st->pixels_shaded, W * H);
+            long d = zt_first_diff(ref, img, n);
+            if (d >= 0) {
+                long px = d / (long)zs_format_bytes(sp.format);
+                ZT_FAIL("scene %d (seed %llx): warnock band %d%s differs from zline at byte %ld = "
+                        "pixel (%ld,%ld): %02x vs %02x; format %d shading %d lights %d fog %d",
+                        k, (unsigned long long)SEED, band, v == 4 ? " via zs_render_frame" : "",
+                        d, px % W, px / W, img[d], ref[d], (int)sp.format, (int)sp.shading,
+                        sp.light_count, sp.fog.enabled);
+            }
+            g_bytes += n;
+            g_warnock += n;
+        }
         /* skipping the first rows renders the rest identically */
-        for (int mode = 0; mode < 2; mode++) {
+        static const zs_visibility skip_modes[] = {ZS_MODE_SPAN, ZS_MODE_ZLINE, ZS_MODE_WARNOCK};
+        for (int mi = 0; mi < 3; mi++) {
+            zs_visibility mode = skip_modes[mi];
             int skip = 1 + (int)zt_below(&g, H - 1);
             memset(img, 0xA5, cap);
-            ZT_ST(frame(&c, &cam, (zs_visibility)mode, &sp, &m, img, 0, 0, skip), ZS_OK);
+            ZT_ST(frame(&c, &cam, mode, &sp, &m, img, 0, 0, skip), ZS_OK);
             long d = zt_first_diff(ref + (size_t)skip * stride, img + (size_t)skip * stride,
                                    n - (size_t)skip * stride);
             ZT_CHECK(d < 0, "scene %d: %s after skipping %d rows differs at byte %ld", k,
-                     mode ? "zline" : "span", skip, d);
+                     mode == ZS_MODE_WARNOCK ? "warnock" : mode ? "zline" : "span", skip, d);
             for (size_t i = 0; i < (size_t)skip * stride; i++)
                 ZT_CHECK(img[i] == 0xA5, "scene %d: skipped rows were written", k);
         }
@@ -288,9 +313,10 @@ int main(void)
     printf("test_modes: seed %llx, %lu scenes (%lu triangles) %dx%d, %lu renders, %lu bytes "
            "compared span vs zline over 6 formats x flat/Gouraud x lights/fog x bands 1/3/8/%d, "
            "%lu span-mode crossings, %lu of %lu pixels covered in the ID16 scenes; %lu packed pixels "
-           "checked; %d failed\n",
+           "checked; Warnock mode: %lu bytes equal to zline, %lu windows visited, %lu pixel "
+           "decisions; %d failed\n",
            (unsigned long long)SEED, g_scenes, g_tris, W, H, g_renders, g_bytes, H, g_crossings,
-           g_id_covered, g_id_px, g_packed, rc);
+           g_id_covered, g_id_px, g_packed, g_warnock, g_windows, g_pixel_decisions, rc);
     fflush(stdout);
     return rc;
 }

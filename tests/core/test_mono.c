@@ -231,12 +231,12 @@ static void test_against_grey_oracle(void **state)
             size_t n = mono_bytes(fmt, W, H);
             static const int bands[] = {1, 3, 8, 13, H};
             for (int b = 0; b < 5; b++)
-                for (int mode = 0; mode < 2; mode++) {
+                for (int mode = 0; mode < ZT_NMODES; mode++) {
                     int band = bands[(b + v + k) % 5];
                     int via_frame = (v >> 2) & 1;
                     if (via_frame && fmt == ZS_FMT_MONO_PAGE) band = 8 * (1 + b % 3);
                     memset(img, 0xC3, n);
-                    ZT_ST(begin(&c, &cam, (zs_visibility)mode, &mp, &m), ZS_OK);
+                    ZT_ST(begin(&c, &cam, ZT_MODE(mode), &mp, &m), ZS_OK);
                     if (via_frame)
                         ZT_ST(render_frame_mono(&c, fmt, img, band), ZS_OK);
                     else
@@ -244,7 +244,7 @@ static void test_against_grey_oracle(void **state)
                     long d = zt_first_diff(want, img, n);
                     ZT_CHECK(d < 0,
                              "scene %d: %s %s%s%s band %d%s: byte %ld is %02x, the oracle %02x",
-                             k, mode ? "zline" : "span", fmt == ZS_FMT_MONO_PAGE ? "page" : "msb",
+                             k, ZT_MODE_NAME(mode), fmt == ZS_FMT_MONO_PAGE ? "page" : "msb",
                              diffuse ? " diffuse" : " bayer", invert ? " inverted" : "", band,
                              via_frame ? " (zs_render_frame)" : "", d, d < 0 ? 0 : img[d],
                              d < 0 ? 0 : want[d]);

@@ -8,6 +8,9 @@
  * window depths in screen space, nearest wins, exact geometric duplicates go
  * to the one submitted first.
  *
+ * The same frames check zs_pick against the ID16 image at every pixel, and
+ * Warnock mode joins the two others against the ray caster.
+ *
  * Near ties are excluded: a pixel where the nearest and the runner-up of
  * another tag differ in window depth by less than TOL (2^-20) may go either
  * way. Their number is printed and must stay below MAX_EXCLUDED_FRACTION of
@@ -27,7 +30,9 @@
 #define MAX_EXCLUDED_FRACTION 0.005
 #define SEED 0x4A7CA57000000003ull
 
-static unsigned long g_bad[2], g_near_disagree[2], g_px[2], g_excluded[2], g_dup_ties[2], g_tris, g_records, g_clipped;
+static unsigned long g_bad[3], g_near_disagree[3], g_px[3], g_excluded[3], g_dup_ties[3], g_tris, g_records, g_clipped;
+static unsigned long g_picks, g_pick_hits;
+static const char *const k_mode_name[3] = {"span", "zline", "warnock"};
 
 static void run(zs_visibility mode)
 {
@@ -44,7 +49,7 @@ static void run(zs_visibility mode)
     zt_cast cast;
     zt_cast_alloc(&cast, W, H);
     static uint8_t img[W * H * 2];
-    int m = (int)mode;
+    int m = mode == ZS_MODE_WARNOCK ? 2 : (int)mode;
     for (int n = 0; n < NSCENES; n++) {
         zt_scene_reset(&sc);
         int ntri = (int)zt_range(&g, 20, 60);
@@ -73,6 +78,25 @@ static void run(zs_visibility mode)
             g_records += recs.n;
             g_clipped += stats->tris_clipped;
         }
+        /* picking names the ID16 pixel everywhere, after a frame of any mode */
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                zs_pick_hit hit;
+                ZT_ST(zs_pick(&c.r, x, y, &hit), ZS_OK);
+                uint16_t id = zt_id_at(img, W, x, y);
+                ZT_CHECK(hit.tag == id && (hit.record == ZS_PICK_NONE) == (id == 0),
+                         "%s scene %d: pick (%d,%d) tag %u record %u, ID16 %u", k_mode_name[m], n,
+                         x, y, hit.tag, hit.record, id);
+                if (id) {
+                    /* its depth: the record's plane there (the ray caster's, in double) */
+                    double z = zt_depth_at(&recs.v[hit.record], x, y);
+                    ZT_CHECK(fabs((double)hit.depth / 1073741824.0 - z) < 1e-5,
+                             "%s scene %d: pick (%d,%d) depth %.9f, plane %.9f", k_mode_name[m], n,
+                             x, y, (double)hit.depth / 1073741824.0, z);
+                    g_pick_hits++;
+                }
+                g_picks++;
+            }
         zt_raycast(&recs, &cast);
         for (int y = 0; y < H; y++)
             for (int x = 0; x < W; x++) {
@@ -92,7 +116,7 @@ static void run(zs_visibility mode)
                 if (g_bad[m]++ >= 3) continue;
                 print_error("raycast mismatch (%s, seed %llx, scene %d) at pixel (%d,%d): ID16 %u, "
                             "ray caster %u (z %.9f, runner-up %.9f)\n",
-                            mode ? "zline" : "span", (unsigned long long)SEED, n, x, y, id, want,
+                            k_mode_name[m], (unsigned long long)SEED, n, x, y, id, want,
                             cast.z1[p], cast.z2[p]);
                 for (size_t i = 0; i < recs.n; i++)
                     if ((recs.v[i].tag == id || recs.v[i].tag == want) &&
@@ -105,10 +129,10 @@ static void run(zs_visibility mode)
             }
     }
     ZT_CHECK(g_bad[m] == 0, "%s: %lu pixels disagree with the ray caster (beyond near ties)",
-             mode ? "zline" : "span", g_bad[m]);
+             k_mode_name[m], g_bad[m]);
     ZT_CHECK((double)g_excluded[m] <= MAX_EXCLUDED_FRACTION * (double)g_px[m],
              "%s: %lu near-tie pixels excluded of %lu covered (limit %.2f%%)",
-             mode ? "zline" : "span", g_excluded[m], g_px[m], 100 * MAX_EXCLUDED_FRACTION);
+             k_mode_name[m], g_excluded[m], g_px[m], 100 * MAX_EXCLUDED_FRACTION);
     zt_cast_free(&cast);
     zt_recs_free(&recs);
     zt_scene_free(&sc);
@@ -127,22 +151,32 @@ static void test_zline(void **state)
     run(ZS_MODE_ZLINE);
 }
 
+static void test_warnock(void **state)
+{
+    (void)state;
+    run(ZS_MODE_WARNOCK);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_span),
         cmocka_unit_test(test_zline),
+        cmocka_unit_test(test_warnock),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     fflush(stderr);
     printf("test_raycast: seed %llx, %d scenes %dx%d, %lu triangles (%lu records, %lu clipped), "
            "near-tie tolerance 2^-20: span %lu of %lu covered pixels excluded (%.4f%%, %lu of them "
            "disagreeing), zline %lu of %lu (%.4f%%, %lu disagreeing); exact-duplicate ties (any vertex order) decided by order: span %lu, zline %lu; "
-           "disagreeing pixels: span %lu, zline %lu; %d failed\n",
+           "disagreeing pixels: span %lu, zline %lu; warnock %lu of %lu excluded, %lu disagreeing; "
+           "%lu picks equal to the ID16 pixel (%lu on a triangle, depth within 1e-5 of the plane); "
+           "%d failed\n",
            (unsigned long long)SEED, NSCENES, W, H, g_tris, g_records, g_clipped, g_excluded[0],
            g_px[0], g_px[0] ? 100.0 * g_excluded[0] / g_px[0] : 0.0, g_near_disagree[0],
            g_excluded[1], g_px[1], g_px[1] ? 100.0 * g_excluded[1] / g_px[1] : 0.0,
-           g_near_disagree[1], g_dup_ties[0], g_dup_ties[1], g_bad[0], g_bad[1], rc);
+           g_near_disagree[1], g_dup_ties[0], g_dup_ties[1], g_bad[0], g_bad[1], g_excluded[2],
+           g_px[2], g_bad[2], g_picks, g_pick_hits, rc);
     fflush(stdout);
     return rc;
 }

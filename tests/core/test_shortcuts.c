@@ -953,6 +953,11 @@ static void test_count_sort(void **state)
             snprintf(w2, sizeof w2, "%s: span without the z-buffer line (insertion sort) vs zline",
                      what);
             same_image(ref, img, CS_W, CS_H, sp.format, w2);
+            memset(img, 0xA5, cap);
+            render(&c, &cam, ZS_MODE_WARNOCK, &sp, &m, 1, NULL, NULL, img, bands[(k + fi + 2) % 4],
+                   NULL);
+            snprintf(w2, sizeof w2, "%s: Warnock vs zline", what);
+            same_image(ref, img, CS_W, CS_H, sp.format, w2);
             g_cs_bytes += 2 * n;
         }
         g_cs_scenes++;
@@ -1093,6 +1098,10 @@ static void test_planes_per_row(void **state)
             zs_shade_params sp = shade(ZS_FMT_ID16, ZS_SHADE_FLAT, 0);
             render(&c, &cam, ZS_MODE_ZLINE, &sp, &m, 1, NULL, NULL, img, PL_H, NULL);
             same_image(ref, img, PL_W, PL_H, ZS_FMT_ID16, what);
+            for (int b = 0; b < 4; b++) { /* Warnock: steep planes anchored as the walk does */
+                render(&c, &cam, ZS_MODE_WARNOCK, &sp, &m, 1, NULL, NULL, img, bands[b], NULL);
+                same_image(ref, img, PL_W, PL_H, ZS_FMT_ID16, what);
+            }
         }
         /* RGB888 Gouraud: every band against zline, then the colours */
         zs_color bg = rand_color(&g);
@@ -1100,6 +1109,8 @@ static void test_planes_per_row(void **state)
         render(&c, &cam, ZS_MODE_ZLINE, &sp, &m, 1, NULL, NULL, rgb, PL_H, NULL);
         for (int b = 0; b < 4; b++) {
             render(&c, &cam, ZS_MODE_SPAN, &sp, &m, 1, NULL, NULL, img, bands[b], NULL);
+            same_image(rgb, img, PL_W, PL_H, ZS_FMT_RGB888, what);
+            render(&c, &cam, ZS_MODE_WARNOCK, &sp, &m, 1, NULL, NULL, img, bands[b], NULL);
             same_image(rgb, img, PL_W, PL_H, ZS_FMT_RGB888, what);
         }
         for (int y = 0; y < PL_H; y++)
@@ -1279,6 +1290,9 @@ static void test_layers(void **state)
             sp = shade(fmts[fi], fi ? ZS_SHADE_GOURAUD : ZS_SHADE_FLAT, rand_color(&g));
             render(&c, &cam, ZS_MODE_ZLINE, &sp, &m, 1, NULL, NULL, ref, LG_H, NULL);
             render(&c, &cam, ZS_MODE_SPAN, &sp, &m, 1, NULL, NULL, img, 1 + (int)zt_below(&g, 9), NULL);
+            same_image(ref, img, LG_W, LG_H, sp.format, what);
+            render(&c, &cam, ZS_MODE_WARNOCK, &sp, &m, 1, NULL, NULL, img, 1 + (int)zt_below(&g, 9),
+                   NULL);
             same_image(ref, img, LG_W, LG_H, sp.format, what);
             g_lg_bytes += (size_t)LG_W * LG_H * zs_format_bytes(sp.format);
         }

@@ -186,6 +186,11 @@ zs_status zt_frame(zt_ctx *c, const zs_camera *cam, zs_visibility mode,
                    const zs_shade_params *sp, const zs_mesh *meshes, int nmesh,
                    zt_recs *recs, uint8_t *img, int band);
 
+/* The visibility modes in a loop index 0, 1, 2: span, zline, Warnock. */
+#define ZT_NMODES 3
+#define ZT_MODE(i) ((zs_visibility)((i) == 2 ? ZS_MODE_WARNOCK : (i)))
+#define ZT_MODE_NAME(i) ((i) == 2 ? "warnock" : (i) ? "zline" : "span")
+
 /* ID16 pixel read (native order). */
 uint16_t zt_id_at(const uint8_t *img, int w, int x, int y);
 

@@ -293,6 +293,8 @@ void zs_raster_row(zs_renderer *r, int y, uint8_t *row)
     if (row) {
         if (r->priv.mode == ZS_MODE_ZLINE)
             zs_zline_row(r, y, row);
+        else if (r->priv.mode == ZS_MODE_PRIORITY)
+            zs_priority_row(r, y, row);
         else
             zs_span_row(r, y, row);
     }

@@ -171,7 +171,7 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
         return ZS_ERR_NULL;
     if (r->priv.state == ZS_STATE_NONE)
         return ZS_ERR_STATE;
-    if (mode != ZS_MODE_SPAN && mode != ZS_MODE_ZLINE)
+    if (mode != ZS_MODE_SPAN && mode != ZS_MODE_ZLINE && mode != ZS_MODE_PRIORITY)
         return ZS_ERR_MODE;
     if (mode == ZS_MODE_ZLINE && (r->cfg.flags & ZS_CFG_NO_ZLINE))
         return ZS_ERR_MODE;

@@ -37,6 +37,10 @@ const char *zs_strerror(zs_status status)
     case ZS_ERR_LEVEL:
         return "malformed level or PVS data (zspan/portal.h): a count, index, cell polygon, "
                "portal or PVS row that zs_level_check refuses";
+    case ZS_ERR_BSP:
+        return "malformed BSP tree or scene cells (zspan/priority.h): a child, triangle or "
+               "object index out of range, a cycle or shared node, a plane out of range, or "
+               "a tree whose walk needs more than ZS_BSP_MAX_STACK entries";
     case ZS_STATUS_COUNT: break;
     }
     return "unknown status code";

@@ -125,6 +125,7 @@ typedef enum zs_status {
                              config's flags left out */
     ZS_ERR_ARGUMENT,      /* any other argument out of its documented range */
     ZS_ERR_LEVEL,         /* malformed level or PVS data (zspan/portal.h) */
+    ZS_ERR_BSP,           /* malformed BSP tree or scene cells (zspan/priority.h) */
     ZS_STATUS_COUNT
 } zs_status;
 
@@ -279,7 +280,9 @@ typedef struct zs_mesh {
 
 typedef enum zs_visibility {
     ZS_MODE_SPAN = 0,   /* spanning scanline: one depth decision per span */
-    ZS_MODE_ZLINE = 1   /* scanline z-buffer: a depth per pixel of the row */
+    ZS_MODE_ZLINE = 1,  /* scanline z-buffer: a depth per pixel of the row */
+    ZS_MODE_PRIORITY = 2 /* list priority: the earliest stored triangle wins, no depth
+                            test (zspan/priority.h: BSP or depth-sorted order) */
 } zs_visibility;
 
 typedef enum zs_shading {
@@ -404,6 +407,18 @@ typedef struct zs_stats {
     uint32_t depth_evals;      /* plane evaluations for visibility */
     uint32_t crossings;        /* penetration crossings split inside a row */
     uint32_t pixels_shaded;    /* pixel writes (== width * rows: each pixel once) */
+    /* list priority (zspan/priority.h); 0 in frames that do not use it */
+    uint32_t bsp_nodes;        /* BSP nodes visited */
+    uint32_t bsp_pruned;       /* triangles skipped because their node plane faces away */
+    uint32_t sort_pairs;       /* depth sort: overlapping pairs the tests had to resolve */
+    uint32_t sort_swaps;       /* depth sort: triangles moved ahead of their place */
+    uint32_t sort_splits;      /* depth sort: triangles split for cycles or penetrations */
+    uint32_t sort_giveups;     /* depth sort: pairs left as sorted (work or pool bound hit) */
+    uint32_t tris_untransformed;  /* triangles of draws culled by their bounds: no vertex
+                                     transformed (counted in tris_submitted and
+                                     tris_rejected too) */
+    uint32_t verts_untransformed; /* their vertices */
+    uint32_t cells_culled;     /* scene cells culled whole against the frustum */
 } zs_stats;
 
 /* ------------------------------------------------------------------ */
@@ -469,6 +484,8 @@ typedef struct zs_renderer_private {
     int64_t line_depth_a;             /* far / (far - near), Q30: 1/w ~ A - depth */
     zs_setup_hook_fn setup_hook;
     void *setup_hook_user;
+    void *ranges;                     /* zs_draw_bsp: the walk giving zs_draw its
+                                         triangle ranges, NULL otherwise */
 } zs_renderer_private;
 
 /* Holds the arena's pools and the frame state. The struct is public so it

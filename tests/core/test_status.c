@@ -152,6 +152,16 @@ static const code_spec k_specs[] = {
       {"zspan", {"zspan/portal.h"}},
       {"portal", {"zspan/portal.h"}},
       {"h", {"zspan/portal.h"}}}},
+    {ZS_ERR_BSP,
+     "ZS_ERR_BSP",
+     {{"malformed", {"malformed"}},
+      {"BSP", {"BSP"}},
+      {"tree", {"tree"}},
+      {"scene", {"scene"}},
+      {"cells", {"cells"}},
+      {"zspan", {"zspan/priority.h"}},
+      {"priority", {"zspan/priority.h"}},
+      {"h", {"zspan/priority.h"}}}},
 };
 
 /* Words of a header comment that carry no meaning of their own. */

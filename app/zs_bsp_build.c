@@ -3,6 +3,7 @@
 #include "zs_bsp_build.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -83,7 +84,7 @@ static int64_t gcd64(int64_t a, int64_t b)
 
 static void vsub(const int16_t *a, const int16_t *b, int64_t out[3])
 {
-    for (int k = 0; k < 3; k++)
+    for (unsigned k = 0; k < 3; k++)
         out[k] = (int64_t)a[k] - b[k];
 }
 
@@ -106,19 +107,19 @@ static int make_plane(const int16_t *a, const int16_t *b, const int16_t *c, plan
     g = gcd64(gcd64(n[0], n[1]), n[2]);
     if (g == 0)
         return 0;
-    for (int k = 0; k < 3; k++)
+    for (unsigned k = 0; k < 3; k++)
         n[k] /= g;
     m = 0;
-    for (int k = 0; k < 3; k++)
+    for (unsigned k = 0; k < 3; k++)
         m = llabs(n[k]) > m ? llabs(n[k]) : m;
     while (m >= ZS_BSP_MAX_NORMAL) {
-        for (int k = 0; k < 3; k++)
+        for (unsigned k = 0; k < 3; k++)
             n[k] = n[k] >= 0 ? (n[k] + 1) / 2 : -((-n[k] + 1) / 2);
         m = (m + 1) / 2;
     }
     if (n[0] == 0 && n[1] == 0 && n[2] == 0)
         return 0;
-    for (int k = 0; k < 3; k++)
+    for (unsigned k = 0; k < 3; k++)
         p->n[k] = n[k];
     p->d = -(n[0] * a[0] + n[1] * a[1] + n[2] * a[2]);
     p->tol = TOL_UNITS * sqrt((double)n[0] * (double)n[0] + (double)n[1] * (double)n[1] +
@@ -173,7 +174,7 @@ static uint32_t cut(builder *b, const plane *pl, uint32_t p, uint32_t q)
     uint32_t x = add_vertex(b);
     if (b->err)
         return 0;
-    for (int k = 0; k < 3; k++) {
+    for (unsigned k = 0; k < 3; k++) {
         double e = b->pos[3 * lo + k] + t * (b->pos[3 * hi + k] - b->pos[3 * lo + k]);
         double r = floor(e + 0.5);
         b->pos[3 * x + k] = (int16_t)r;
@@ -219,7 +220,7 @@ static void split_tri(builder *b, const plane *pl, const wtri *t, const int cls[
     uint32_t f[4], bk[4];
     int nf = 0, nb = 0;
     b->splits++;
-    for (int k = 0; k < 3; k++) {
+    for (unsigned k = 0; k < 3; k++) {
         uint32_t p = t->v[k], q = t->v[(k + 1) % 3];
         int cp = cls[k], cq = cls[(k + 1) % 3];
         if (cp >= 0)
@@ -233,8 +234,10 @@ static void split_tri(builder *b, const plane *pl, const wtri *t, const int cls[
             f[nf++] = x;
             bk[nb++] = x;
             /* the sliver p, q, x between the edge and the rounded vertex:
-             * facing the eye where rounding moved x into the triangle (it
-             * fills the gap there), turned over (culled) where it moved out */
+             * it faces the eye where rounding moved x into the triangle and
+             * fills the gap there; turned over (culled) where x moved out.
+             * Always kept: on screen the 28.4 rounding decides again, and
+             * the windings add up either way */
             if (!collapsed(b, p, q, x)) {
                 push(front, (wtri){{p, q, x}, t->src});
                 b->slivers++;
@@ -249,7 +252,7 @@ static void classify(const builder *b, const plane *pl, const wtri *t, int cls[3
                      int *nb)
 {
     *nf = *nb = 0;
-    for (int k = 0; k < 3; k++) {
+    for (unsigned k = 0; k < 3; k++) {
         cls[k] = side_of(pl, &b->pos[3 * t->v[k]]);
         *nf += cls[k] > 0;
         *nb += cls[k] < 0;
@@ -329,7 +332,7 @@ static uint16_t build(builder *b, tlist *l, int depth)
             /* within the tolerance but across the plane (a sliver along an
              * edge of it): to the side its vertices lean to */
             int64_t sum = 0;
-            for (int k = 0; k < 3; k++)
+            for (unsigned k = 0; k < 3; k++)
                 sum += dist(&pl, &b->pos[3 * t->v[k]]);
             push(sum >= 0 ? &front : &back, *t);
         } else if (nf && nb) {
@@ -417,7 +420,7 @@ const char *zs_bspb_build(const zs_bspb_mesh *in, const zs_bspb_params *p, zs_bs
     b.cands = p && p->candidates > 0 ? p->candidates : 24;
     for (size_t i = 0; i < in->nv; i++) {
         uint32_t v = add_vertex(&b);
-        for (int k = 0; k < 3; k++) {
+        for (unsigned k = 0; k < 3; k++) {
             b.pos[3 * v + k] = in->pos[3 * i + k];
             b.col[3 * v + k] = in->vcol ? (double)((in->vcol[i] >> (16 - 8 * k)) & 255u) : 0;
             b.nrm[3 * v + k] = in->vnrm ? in->vnrm[3 * i + k] / 16384.0 : 0;
@@ -446,8 +449,12 @@ const char *zs_bspb_build(const zs_bspb_mesh *in, const zs_bspb_params *p, zs_bs
         build(&b, &all, 1);
     if (!b.err) {
         out->stack = walk_stack(b.nodes, 0, 0);
-        if (out->stack > ZS_BSP_MAX_STACK)
-            b.err = "the walk of the tree would need more than ZS_BSP_MAX_STACK entries";
+        if (out->stack > ZS_BSP_MAX_STACK) {
+            static char msg[96];
+            snprintf(msg, sizeof msg, "the walk of the tree would need %d entries, more than "
+                     "ZS_BSP_MAX_STACK", out->stack);
+            b.err = msg;
+        }
     }
     free(all.t);
     free(b.ckey);
@@ -466,7 +473,7 @@ const char *zs_bspb_build(const zs_bspb_mesh *in, const zs_bspb_params *p, zs_bs
         if (!m->idx || !out->source)
             abort();
         for (size_t i = 0; i < m->nt; i++) {
-            for (int k = 0; k < 3; k++)
+            for (unsigned k = 0; k < 3; k++)
                 m->idx[3 * i + k] = (uint16_t)b.out.t[i].v[k];
             out->source[i] = b.out.t[i].src;
         }
@@ -478,8 +485,8 @@ const char *zs_bspb_build(const zs_bspb_mesh *in, const zs_bspb_params *p, zs_bs
             for (size_t i = 0; i < m->nt; i++) {
                 if (m->fcol)
                     m->fcol[i] = in->fcol[out->source[i]];
-                for (int k = 0; m->fnrm && k < 3; k++)
-                    m->fnrm[3 * i + k] = in->fnrm[3 * out->source[i] + (size_t)k];
+                for (unsigned k = 0; m->fnrm && k < 3; k++)
+                    m->fnrm[3 * i + k] = in->fnrm[3 * out->source[i] + k];
             }
         }
         if (in->vcol) {
@@ -487,7 +494,7 @@ const char *zs_bspb_build(const zs_bspb_mesh *in, const zs_bspb_params *p, zs_bs
                 abort();
             for (size_t i = 0; i < m->nv; i++) {
                 uint32_t c = 0;
-                for (int k = 0; k < 3; k++) {
+                for (unsigned k = 0; k < 3; k++) {
                     double v = floor(b.col[3 * i + k] + 0.5);
                     c |= (uint32_t)(v < 0 ? 0 : v > 255 ? 255 : v) << (16 - 8 * k);
                 }
@@ -499,7 +506,7 @@ const char *zs_bspb_build(const zs_bspb_mesh *in, const zs_bspb_params *p, zs_bs
                 abort();
             for (size_t i = 0; i < m->nv; i++) {
                 double *n = &b.nrm[3 * i], len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-                for (int k = 0; k < 3; k++)
+                for (unsigned k = 0; k < 3; k++)
                     m->vnrm[3 * i + k] = q14(len > 0 ? n[k] / len : 0);
             }
         }

@@ -12,6 +12,8 @@ enum { VISIT = 0, RANGE_FRONT = 1, RANGE_BACK = 2, RANGE_BOTH = 3 };
 /* |eye coordinate| kept below this (Q16 position units) so a plane test fits
  * 64 bits: 3 * 2^24 * 2^36 + 2^58 < 2^63. */
 #define EYE_MAX ((int64_t)1 << 36)
+/* |model 3x3 entry| below this (scales below 256) keeps A^T rel in 64 bits */
+#define MODEL_MAX ((int32_t)1 << 24)
 
 typedef struct bsp_walk {
     const zs_bsp *bsp;
@@ -110,9 +112,9 @@ static zs_status eye_position(const zs_renderer *r, const zs_mat34 *model, const
     }
     /* the model's columns: orthogonal, of one length s (s2 = s^2, Q32) */
     for (k = 0; k < 3; k++) {
-        if (model->m[k][0] >= (1 << 24) || model->m[k][0] <= -(1 << 24) ||
-            model->m[k][1] >= (1 << 24) || model->m[k][1] <= -(1 << 24) ||
-            model->m[k][2] >= (1 << 24) || model->m[k][2] <= -(1 << 24))
+        if (model->m[k][0] >= MODEL_MAX || model->m[k][0] <= -MODEL_MAX ||
+            model->m[k][1] >= MODEL_MAX || model->m[k][1] <= -MODEL_MAX ||
+            model->m[k][2] >= MODEL_MAX || model->m[k][2] <= -MODEL_MAX)
             return ZS_ERR_ARGUMENT;
         s2 += (int64_t)model->m[k][0] * model->m[k][0];
     }

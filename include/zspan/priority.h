@@ -15,7 +15,7 @@
  *    skipped without being looked at (counted in zs_stats.bsp_pruned).
  *
  * Freestanding like the rest of the core: the walk keeps a stack of at most
- * ZS_BSP_MAX_STACK + 3 entries (4 bytes each, 268 bytes) on the C stack and
+ * ZS_BSP_MAX_STACK + 3 entries (4 bytes each, 524 bytes) on the C stack and
  * nothing else. An entry stays pending on it only for a node with both a
  * near and a far side to come back to, so a long chain (a convex object:
  * every plane has the rest behind it) costs nothing; zs_bsp_check refuses a
@@ -31,7 +31,7 @@ extern "C" {
 #endif
 
 #define ZS_BSP_NONE 0xFFFFu
-#define ZS_BSP_MAX_STACK 64          /* pending entries of the walk (see above) */
+#define ZS_BSP_MAX_STACK 128         /* pending entries of the walk (see above) */
 #define ZS_BSP_MAX_NORMAL (1L << 24) /* |n[k]| below this */
 #define ZS_BSP_MAX_D ((int64_t)1 << 42) /* |d| below this */
 

@@ -10,3 +10,4 @@ $(BUILD)/tests/core/test_priority: app/zs_bsp_build.c app/zs_bsp_build.h
 # the converter's --bsp
 MESHC_APP_SRCS += app/zs_bsp_build.c
 $(MESHC): app/zs_bsp_build.c app/zs_bsp_build.h
+$(BUILD)/tests/core/test_cull: app/zs_cells_build.c app/zs_cells_build.h

@@ -25,7 +25,8 @@ static zs_status check_config(const zs_config *c)
     if (c->max_triangles == 0 || c->max_vertices == 0 || c->max_active_edges < 2 ||
         c->max_active_edges > ZS_MAX_ACTIVE_EDGES)
         return ZS_ERR_CAPACITY;
-    if (c->flags & ~(uint16_t)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES))
+    if (c->flags & ~(uint16_t)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES |
+                               ZS_CFG_PRIORITY))
         return ZS_ERR_ARGUMENT;
     return ZS_OK;
 }
@@ -47,6 +48,7 @@ static uint32_t arena_bytes32(const zs_config *c)
         ((c->flags & ZS_CFG_NO_ZLINE)
              ? 0u
              : ROUND8_32((uint32_t)c->width * 8u) + ROUND8_32((uint32_t)c->width * 2u)) +
+        ((c->flags & ZS_CFG_PRIORITY) ? 2u * ROUND8_32((uint32_t)c->max_triangles * 2u) : 0u) +
         ZS_ARENA_ALIGN;
     return n;
 }
@@ -141,6 +143,10 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
         r->priv.line_ids[1] = carve(&cur, (size_t)cfg->width * 2u);
         r->priv.tri_normal = carve(&cur, (size_t)cfg->max_triangles * ZS_TRI_NORMAL_BYTES);
         r->priv.draw_starts = carve(&cur, ((size_t)cfg->max_triangles + 7u) / 8u);
+    }
+    if (cfg->flags & ZS_CFG_PRIORITY) {
+        r->priv.sort_list = carve(&cur, (size_t)cfg->max_triangles * 2u);
+        r->priv.sort_aux = carve(&cur, (size_t)cfg->max_triangles * 2u);
     }
     /* the widest guard band whose projected 28.4 coordinates fit int16 */
     dim = cfg->width > cfg->height ? cfg->width : cfg->height;

@@ -14,6 +14,16 @@
  *    that order. A node's triangles whose plane faces away from the eye are
  *    skipped without being looked at (counted in zs_stats.bsp_pruned).
  *
+ *  - zs_depth_sort: for dynamic triangles (ZS_CFG_PRIORITY), after the
+ *    frame's draws: the stored records sorted by their farthest depth, and
+ *    with ZS_SORT_NNS the Newell-Newell-Sancha tests on every pair whose
+ *    depth ranges overlap (x extents, y extents, each plane's side test both
+ *    ways, the screen triangles' overlap), moving a record ahead, or, for a
+ *    cyclic or penetrating pair, cutting one by the other's plane (new
+ *    records and vertices from the pools). ZS_SORT_DEPTH is the plain sort
+ *    alone: fast and approximate, wrong wherever depth ranges overlap in
+ *    the wrong way (long surfaces, cycles, penetrations).
+ *
  * Freestanding like the rest of the core: the walk keeps a stack of at most
  * ZS_BSP_MAX_STACK + 3 entries (4 bytes each, 524 bytes) on the C stack and
  * nothing else. An entry stays pending on it only for a node with both a
@@ -76,6 +86,25 @@ zs_status zs_bsp_check(const zs_bsp *bsp);
  * the mesh's triangle numbers, as with zs_draw. Works in every mode; in
  * ZS_MODE_PRIORITY the order is the visibility. */
 zs_status zs_draw_bsp(zs_renderer *r, const zs_bsp *bsp, const zs_mat34 *model);
+
+typedef enum zs_sort_kind {
+    ZS_SORT_DEPTH = 0, /* by farthest depth only (approximate) */
+    ZS_SORT_NNS = 1    /* and the Newell-Newell-Sancha tests, splitting cycles */
+} zs_sort_kind;
+
+#define ZS_SORT_BUDGET_DEFAULT 65536u /* pair tests per frame when budget is 0 */
+
+/* Reorders the frame's stored records near to far (record 0 wins in
+ * ZS_MODE_PRIORITY); call after the last draw, before rendering. At most
+ * `budget` pair tests (0: ZS_SORT_BUDGET_DEFAULT); past it the rest stays as
+ * the plain sort left it (zs_stats.sort_giveups). Splits take records and
+ * vertices from the pools; a pair that cannot be split for want of room is
+ * left as it is (sort_giveups too). zs_stats: sort_pairs (pairs the first
+ * tests could not clear), sort_swaps, sort_splits. ZS_ERR_MODE without
+ * ZS_CFG_PRIORITY, ZS_ERR_ARGUMENT for another kind, ZS_ERR_STATE outside
+ * the draws of a frame. Work: O(n log n) for the sort, then at most budget
+ * pair tests (each a few hundred operations) and list moves of O(n). */
+zs_status zs_depth_sort(zs_renderer *r, zs_sort_kind kind, uint32_t budget);
 
 #ifdef __cplusplus
 }

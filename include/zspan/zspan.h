@@ -152,6 +152,9 @@ const char *zs_strerror(zs_status status);
                                     triangle ids and a flag line (5 B per column,
                                     1 B shared with ZS_CFG_MONO) and a normal and
                                     a draw-start bit per triangle record (8 B + 1 bit) */
+#define ZS_CFG_PRIORITY 0x40u    /* depth sorting for ZS_MODE_PRIORITY (zs_depth_sort,
+                                    zspan/priority.h): a list and a work word per
+                                    triangle record, 4 B */
 
 /* Sizes of the records the arena holds (checked against sizeof in src/). */
 #define ZS_VERTEX_BYTES 8u        /* screen x, y (28.4 in int16) and depth */
@@ -175,7 +178,7 @@ const char *zs_strerror(zs_status status);
  * 2 B per row, edges 32 B, active triangles 60 B (+36 B colour planes), the
  * z-buffer line 10 B per column; with ZS_CFG_MONO 3 B per column, with
  * ZS_CFG_LINES 5 B per column (4 with ZS_CFG_MONO too) and 8 B and 1 bit
- * per triangle record. */
+ * per triangle record; with ZS_CFG_PRIORITY 4 B per triangle record. */
 #define ZS_ARENA_BYTES_CFG(w, h, max_tris, max_verts, max_edges, flags)            \
     (ZS_ROUND8_((size_t)(max_verts) * ZS_VERTEX_BYTES) +                            \
      (((flags) & ZS_CFG_FLAT_ONLY) ? 0u                                             \
@@ -197,6 +200,7 @@ const char *zs_strerror(zs_status status);
                                      ZS_ROUND8_((size_t)(max_tris) * ZS_TRI_NORMAL_BYTES) + \
                                      ZS_ROUND8_(((size_t)(max_tris) + 7u) / 8u)     \
                                : 0u) +                                              \
+     (((flags) & ZS_CFG_PRIORITY) ? 2u * ZS_ROUND8_((size_t)(max_tris) * 2u) : 0u) +   \
      ZS_ARENA_ALIGN)
 
 /* Both visibility modes, Gouraud and fog; no 1-bit output, no hidden lines. */
@@ -486,6 +490,8 @@ typedef struct zs_renderer_private {
     void *setup_hook_user;
     void *ranges;                     /* zs_draw_bsp: the walk giving zs_draw its
                                          triangle ranges, NULL otherwise */
+    uint16_t *sort_list;              /* ZS_CFG_PRIORITY: zs_depth_sort's list */
+    uint16_t *sort_aux;               /* ZS_CFG_PRIORITY: its marks, then new numbers */
 } zs_renderer_private;
 
 /* Holds the arena's pools and the frame state. The struct is public so it

@@ -18,6 +18,7 @@ typedef struct plane {
 typedef struct wtri {
     uint32_t v[3];
     uint32_t src;
+    uint32_t sliver; /* a gap filler: never cut again (see classify) */
 } wtri;
 
 typedef struct tlist {
@@ -210,7 +211,7 @@ static void emit_poly(builder *b, const uint32_t *v, int n, uint32_t src, tlist 
 {
     for (int k = 1; k + 1 < n; k++)
         if (!collapsed(b, v[0], v[k], v[k + 1]))
-            push(l, (wtri){{v[0], v[k], v[k + 1]}, src});
+            push(l, (wtri){{v[0], v[k], v[k + 1]}, src, 0});
 }
 
 /* Cuts t by pl into front and back pieces (and slivers, to front). */
@@ -239,7 +240,7 @@ static void split_tri(builder *b, const plane *pl, const wtri *t, const int cls[
              * Always kept: on screen the 28.4 rounding decides again, and
              * the windings add up either way */
             if (!collapsed(b, p, q, x)) {
-                push(front, (wtri){{p, q, x}, t->src});
+                push(front, (wtri){{p, q, x}, t->src, 1});
                 b->slivers++;
             }
         }
@@ -335,6 +336,12 @@ static uint16_t build(builder *b, tlist *l, int depth)
             for (unsigned k = 0; k < 3; k++)
                 sum += dist(&pl, &b->pos[3 * t->v[k]]);
             push(sum >= 0 ? &front : &back, *t);
+        } else if (nf && nb && t->sliver) {
+            /* a sliver runs along a whole edge and would be cut by every
+             * plane crossing it, making slivers of its own: it goes whole to
+             * the side of most of its vertices (it is at most a rounding
+             * wide, inside the bound) */
+            push(nf >= nb ? &front : &back, *t);
         } else if (nf && nb) {
             split_tri(b, &pl, t, cls, &front, &back);
         } else {
@@ -441,7 +448,7 @@ const char *zs_bspb_build(const zs_bspb_mesh *in, const zs_bspb_params *p, zs_bs
             out->dropped++;
             continue;
         }
-        push(&all, (wtri){{t[0], t[1], t[2]}, (uint32_t)i});
+        push(&all, (wtri){{t[0], t[1], t[2]}, (uint32_t)i, 0});
     }
     if (!b.err && all.n == 0)
         b.err = "no triangle with an area";

@@ -480,6 +480,7 @@ struct zs_tri;
 struct zs_edge;
 struct zs_active;
 struct zs_active_color;
+struct zs_renderer;
 
 /* The renderer's private state: pools carved from the arena and the frame
  * in progress. It may change between versions; do not use it. */
@@ -531,6 +532,7 @@ typedef struct zs_renderer_private {
                                          triangle ranges, NULL otherwise */
     uint16_t *sort_list;              /* ZS_CFG_PRIORITY: zs_depth_sort's list */
     uint16_t *sort_aux;               /* ZS_CFG_PRIORITY: its marks, then new numbers */
+    void (*row_fn)(struct zs_renderer *r, int y, uint8_t *row); /* the frame's row walk */
     /* A-buffer (abuffer.c) */
     struct zs_aa_state *aa;           /* its pools; NULL without ZS_CFG_ABUFFER */
     uint8_t aa_mode;                  /* zs_aa_mode of the frame */

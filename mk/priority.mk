@@ -98,3 +98,12 @@ bench-priority: $(PRI_FW_M4) $(PRI_FW_M0) $(PRI_HOST) $(PRI_BSP_SRCS) $(MESHC) |
 	    BSP_DIR=$(PRI_BSP_DIR) ASSIMP_MODELS=$(ASSIMP_MODELS) BENCH_GEN=$(BENCH_GEN) \
 	    FW_QEMU="$(FW_QEMU)" FW_QEMU_FLAGS="$(FW_QEMU_FLAGS)" OUT=bench/priority.md \
 	    WORK=$(BENCH_BUILD)/priority bash bench/run_priority.sh
+
+# --- a libFuzzer harness of the BSP and cell checks, their walks and the depth sort
+ifdef FUZZ_DIR
+FUZZ_HARNESSES += priority
+# fuzz.mk's rules took their prerequisites before this file added the harness
+fuzz fuzz-build test-fuzz-smoke fuzz-merge: $(FUZZ_DIR)/fuzz_priority
+$(FUZZ_DIR)/fuzz_priority: tests/fuzz/fuzz_priority.c tests/fuzz/fuzz_util.h $(FUZZ_CORE_LIB) | deps
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer -o $@ $< $(FUZZ_CORE_LIB)
+endif

@@ -1167,8 +1167,9 @@ static void write_files(const options *o, const model *m, const char *name, long
     else
         fprintf(fc, "    NULL, /* vertex_normals */\n");
     fprintf(fc, "    %ld, /* scale, Q16.16 */\n    %zuu, /* vertex_count */\n"
-                "    %zuu, /* triangle_count */\n    0x%06lXu /* color */\n};\n",
+                "    %zuu, /* triangle_count */\n    0x%06lXu, /* color */\n",
             qscale, om.nv, om.nt, (unsigned long)om.color);
+    fprintf(fc, "    NULL, /* uvs */\n    NULL /* texture */\n};\n");
     if (o->bsp) {
         /* nodes: {d, {n}, front, back, first, n_front, n_back} (zspan/priority.h) */
         fprintf(fc, "\nstatic const zs_bsp_node %s_bsp_nodes[%zu] = {\n", name,

@@ -12,7 +12,9 @@
 #include "raycast.h"
 #include "regions.h"
 #include "zs_arena.h"
+#include "zs_bsp_build.h"
 #include "zs_model.h"
+#include "zspan/priority.h"
 #include "zs_opts.h"
 
 static int vec_to_fixed(const char *what, const double v[3], zs_vec3 *out);
@@ -203,8 +205,10 @@ static int parse_args(int argc, char **argv, sim_render_opts *o)
             o->raycast = strcmp(v, "raycast") == 0;
             if (o->raycast)
                 o->mode = ZS_MODE_SPAN; /* the core makes the records */
+            else if (!strcmp(v, "priority"))
+                o->mode = ZS_MODE_PRIORITY;
             else if (zs_opt_mode(SIM_PROG, v, &o->mode) != 0) {
-                fprintf(stderr, "zspan-sim: --mode: or raycast (render only)\n");
+                fprintf(stderr, "zspan-sim: --mode: or raycast, priority (render only)\n");
                 return SIM_EXIT_USAGE;
             }
         } else if (OPT("--grid")) {
@@ -214,6 +218,12 @@ static int parse_args(int argc, char **argv, sim_render_opts *o)
             if (m < 0)
                 return SIM_EXIT_USAGE;
             o->svg = v;
+        } else if (OPT("--order")) {
+            static const char *const orders[] = {"bsp", "nns", "sort"};
+            int k;
+            if (m < 0 || zs_opt_choice(SIM_PROG, "--order", v, orders, 3, &k) != 0)
+                return SIM_EXIT_USAGE;
+            o->order = SIM_ORDER_BSP + k;
         } else if (OPT("--shade")) {
             static const char *const shades[] = {"flat", "gouraud", "ids"};
             if (m < 0 || zs_opt_choice(SIM_PROG, "--shade", v, shades, 3, &o->shade) != 0)
@@ -551,6 +561,88 @@ static int vec_to_fixed(const char *what, const double v[3], zs_vec3 *out)
     return 0;
 }
 
+/* --order bsp: compiles the meshes into one BSP tree (app/zs_bsp_build.c),
+ * all chunks merged so that their triangles are ordered among each other;
+ * *extra: the triangles the splits add. Returns 0, or -1 after a message. */
+static int build_tree(const zs_model *scene, zs_bspb_result *tree, zs_mesh *mesh,
+                      unsigned long *extra, const sim_render_opts *o)
+{
+    size_t i, nv = 0, nt = 0, v0 = 0, t0 = 0;
+    int fcol = 1, vnrm = 1, vcol = 1;
+    zs_fixed scale = 0;
+    zs_bspb_mesh in;
+    const char *err;
+    for (i = 0; i < scene->count; i++) {
+        const zs_mesh *m = &scene->chunks[i].mesh;
+        nv += m->vertex_count;
+        nt += m->triangle_count;
+        fcol &= m->face_colors != NULL;
+        vnrm &= m->vertex_normals != NULL;
+        vcol &= m->vertex_colors != NULL;
+        if (m->scale > scale)
+            scale = m->scale; /* the chunks are put on the coarsest grid */
+    }
+    if (nv > 65535 || nt > 65535 || scene->count == 0) {
+        fprintf(stderr, "zspan-sim: --order bsp: at most 65535 vertices and triangles in all\n");
+        return -1;
+    }
+    memset(&in, 0, sizeof in);
+    in.pos = malloc(3 * nv * sizeof *in.pos + 1);
+    in.idx = malloc(3 * nt * sizeof *in.idx + 1);
+    in.fcol = fcol ? malloc(nt * sizeof *in.fcol + 1) : NULL;
+    in.vnrm = vnrm ? malloc(3 * nv * sizeof *in.vnrm + 1) : NULL;
+    in.vcol = vcol ? malloc(nv * sizeof *in.vcol + 1) : NULL;
+    if (!in.pos || !in.idx || (fcol && !in.fcol) || (vnrm && !in.vnrm) || (vcol && !in.vcol)) {
+        fprintf(stderr, "zspan-sim: out of memory\n");
+        return -1;
+    }
+    for (i = 0; i < scene->count; i++) {
+        const zs_mesh *m = &scene->chunks[i].mesh;
+        size_t k;
+        for (k = 0; k < 3u * m->vertex_count; k++)
+            in.pos[3 * v0 + k] =
+                (int16_t)lround((double)m->positions[k] * (double)m->scale / (double)scale);
+        if (vnrm)
+            memcpy(in.vnrm + 3 * v0, m->vertex_normals, 3u * m->vertex_count * sizeof *in.vnrm);
+        if (vcol)
+            memcpy(in.vcol + v0, m->vertex_colors, m->vertex_count * sizeof *in.vcol);
+        if (fcol)
+            memcpy(in.fcol + t0, m->face_colors, m->triangle_count * sizeof *in.fcol);
+        for (k = 0; k < 3u * m->triangle_count; k++)
+            in.idx[3 * t0 + k] = (uint16_t)(m->indices[k] + v0);
+        v0 += m->vertex_count;
+        t0 += m->triangle_count;
+    }
+    in.nv = nv;
+    in.nt = nt;
+    err = zs_bspb_build(&in, NULL, tree);
+    free(in.pos);
+    free(in.idx);
+    free(in.fcol);
+    free(in.vnrm);
+    free(in.vcol);
+    if (err) {
+        fprintf(stderr, "zspan-sim: --order bsp: %s\n", err);
+        return -1;
+    }
+    *mesh = scene->chunks[0].mesh;
+    mesh->scale = scale;
+    mesh->positions = tree->mesh.pos;
+    mesh->indices = tree->mesh.idx;
+    mesh->face_colors = tree->mesh.fcol;
+    mesh->face_normals = tree->mesh.fnrm;
+    mesh->vertex_colors = tree->mesh.vcol;
+    mesh->vertex_normals = tree->mesh.vnrm;
+    mesh->vertex_count = (uint16_t)tree->mesh.nv;
+    mesh->triangle_count = (uint16_t)tree->mesh.nt;
+    *extra = tree->mesh.nt > nt ? tree->mesh.nt - nt : 0;
+    if (!o->quiet)
+        printf("render: BSP: %zu nodes, %zu -> %zu triangles (%zu splits, %zu slivers), walk "
+               "stack %d\n",
+               tree->node_count, nt, tree->mesh.nt, tree->splits, tree->slivers, tree->stack);
+    return 0;
+}
+
 static int core_error(const char *call, zs_status st)
 {
     fprintf(stderr, "zspan-sim: %s: %s (status %d)\n", call, zs_strerror(st), (int)st);
@@ -730,9 +822,13 @@ int sim_cmd_render(int argc, char **argv)
     size_t arena_size, stride, i;
     unsigned bpp;
     int rc = SIM_EXIT_FAIL, f;
+    zs_bspb_result bsp;          /* --order bsp: the tree of all chunks */
+    zs_mesh bsp_mesh;
+    unsigned long bsp_tris = 0;
 
     memset(&scene, 0, sizeof scene);
     memset(&recs, 0, sizeof recs);
+    memset(&bsp, 0, sizeof bsp);
     f = sim_render_parse(argc, argv, &o);
     if (f != 0 || o.done) {
         sim_render_opts_free(&o);
@@ -820,10 +916,21 @@ int sim_cmd_render(int argc, char **argv)
         model_ptr = &model;
     }
 
+    if (o.order != SIM_ORDER_SUBMIT && o.mode != ZS_MODE_PRIORITY) {
+        fprintf(stderr, "zspan-sim: --order needs --mode priority\n");
+        rc = SIM_EXIT_USAGE;
+        goto done;
+    }
+    if (o.order == SIM_ORDER_BSP && build_tree(&scene, &bsp, &bsp_mesh, &bsp_tris, &o) != 0)
+        goto done;
+
     /* Arena from the scene: clipping can split a triangle into a few. */
     cfg = zs_app_config(o.width, o.height,
-                        o.max_tris ? (unsigned long)o.max_tris : scene.total_tris * 3ul + 64u,
+                        o.max_tris ? (unsigned long)o.max_tris
+                                   : (scene.total_tris + bsp_tris) * 3ul + 64u,
                         (unsigned long)o.max_verts, (unsigned long)o.max_edges);
+    if (o.order == SIM_ORDER_NNS || o.order == SIM_ORDER_SORT)
+        cfg.flags |= ZS_CFG_PRIORITY;
     if (o.aa || o.n_opacity)
         cfg.flags |= ZS_CFG_ABUFFER;
     arena = zs_app_renderer(&r, &cfg, &arena_size, SIM_PROG);
@@ -923,9 +1030,22 @@ int sim_cmd_render(int argc, char **argv)
                 goto done;
             }
         }
-        st = zs_draw(&r, &scene.chunks[i].mesh, model_ptr);
+        if (o.order == SIM_ORDER_BSP) {
+            zs_bsp tree = {bsp.nodes, &bsp_mesh, (uint16_t)bsp.node_count};
+            st = zs_draw_bsp(&r, &tree, model_ptr);
+            i = scene.count; /* one tree holds them all */
+        } else {
+            st = zs_draw(&r, &scene.chunks[i].mesh, model_ptr);
+        }
         if (st != ZS_OK) {
-            rc = core_error("zs_draw", st);
+            rc = core_error(o.order == SIM_ORDER_BSP ? "zs_draw_bsp" : "zs_draw", st);
+            goto done;
+        }
+    }
+    if (o.order == SIM_ORDER_NNS || o.order == SIM_ORDER_SORT) {
+        st = zs_depth_sort(&r, o.order == SIM_ORDER_NNS ? ZS_SORT_NNS : ZS_SORT_DEPTH, 0);
+        if (st != ZS_OK) {
+            rc = core_error("zs_depth_sort", st);
             goto done;
         }
     }
@@ -999,6 +1119,7 @@ int sim_cmd_render(int argc, char **argv)
     }
     rc = SIM_EXIT_OK;
 done:
+    zs_bspb_free(&bsp);
     if (dump != NULL)
         fclose(dump);
     free(img);

@@ -45,6 +45,9 @@ typedef struct sim_demo_opts {
 
 int sim_demo_parse(int argc, char **argv, sim_demo_opts *o);
 
+/* zspan-sim render --order: how priority mode gets its order (zspan/priority.h) */
+enum { SIM_ORDER_SUBMIT = 0, SIM_ORDER_BSP, SIM_ORDER_NNS, SIM_ORDER_SORT };
+
 typedef struct sim_render_opts {
     const char **files;
     int nfiles;
@@ -59,6 +62,7 @@ typedef struct sim_render_opts {
     int two_sided;        /* draw back faces too */
     int up_axis;          /* ZS_UP_* of app/zs_model.h: the files' up axis */
     zs_visibility mode;
+    int order;            /* --order (priority mode): SIM_ORDER_* */
     int shade;
     const char *out;
     int out_set;

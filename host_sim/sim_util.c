@@ -27,6 +27,16 @@ void sim_print_stats(FILE *f, const zs_stats *s)
     if (s->windows)
         fprintf(f, "  warnock: %lu windows visited, %lu pixel decisions\n",
                 (unsigned long)s->windows, (unsigned long)s->pixel_decisions);
+    if (s->bsp_nodes || s->sort_pairs || s->sort_splits || s->sort_giveups || s->cells_culled ||
+        s->tris_untransformed)
+        fprintf(f, "  priority: BSP nodes visited %lu, triangles pruned %lu; sort: pairs "
+                   "resolved %lu, moves %lu, splits %lu, give-ups %lu; culled: %lu cells, %lu "
+                   "triangles and %lu vertices never transformed\n",
+                (unsigned long)s->bsp_nodes, (unsigned long)s->bsp_pruned,
+                (unsigned long)s->sort_pairs, (unsigned long)s->sort_swaps,
+                (unsigned long)s->sort_splits, (unsigned long)s->sort_giveups,
+                (unsigned long)s->cells_culled, (unsigned long)s->tris_untransformed,
+                (unsigned long)s->verts_untransformed);
 }
 
 /* Longest path accepted (the Linux PATH_MAX less its terminator). */
@@ -109,7 +119,10 @@ uint32_t sim_fnv1a(const void *data, size_t n)
 
 const char *sim_mode_name(zs_visibility mode)
 {
-    return mode == ZS_MODE_WARNOCK ? "warnock" : mode == ZS_MODE_ZLINE ? "zline" : "span";
+    return mode == ZS_MODE_WARNOCK    ? "warnock"
+           : mode == ZS_MODE_ZLINE    ? "zline"
+           : mode == ZS_MODE_PRIORITY ? "priority"
+                                      : "span";
 }
 
 typedef struct band_sink {

@@ -41,6 +41,10 @@ const char *zs_strerror(zs_status status)
         return "bad texture (see zs_texture_check): a size that is not a power of two in "
                "1..ZS_TEX_MAX_DIM, no texels (or palette), an unknown format or flags, or a mesh "
                "with uvs and no texture or the other way round";
+    case ZS_ERR_BSP:
+        return "malformed BSP tree or scene cells (zspan/priority.h): a child, triangle or "
+               "object index out of range, a cycle or shared node, a plane out of range, or "
+               "a tree whose walk needs more than ZS_BSP_MAX_STACK entries";
     case ZS_STATUS_COUNT: break;
     }
     return "unknown status code";

@@ -466,7 +466,7 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
 {
     draw_ctx c;
     zs_vert *pool;
-    uint32_t i, t, vfit, room, tag0, tag_base;
+    uint32_t i, t, t_end, vfit, room, tag0, tag_base;
     int tag_fast, inside;
     uint16_t base;
     if (!r || !m)
@@ -518,12 +518,15 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     tag_base = tag0 % 65535u;
     tag_fast = tag0 <= UINT32_MAX - m->triangle_count; /* and t < 65535: uint16 count */
     r->priv.tag_counter += m->triangle_count;
-    if (inside && vfit == m->vertex_count && tag_fast) {
+    if (inside && vfit == m->vertex_count && tag_fast && !r->priv.ranges) {
         r->stats.tris_submitted += m->triangle_count;
         setup_inside(&c, base, tag_base);
         return ZS_OK;
     }
-    for (t = 0; t < m->triangle_count; t++) {
+    t = 0;
+    t_end = r->priv.ranges ? 0u : m->triangle_count; /* zs_draw_bsp: ranges in order */
+    while (t < t_end || (r->priv.ranges && zs_next_range(r, &t, &t_end)))
+    for (; t < t_end; t++) {
         const uint16_t *idx = m->indices + 3u * t;
         uint32_t i0 = idx[0], i1 = idx[1], i2 = idx[2];
         const zs_vert *v0, *v1, *v2;

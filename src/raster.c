@@ -43,6 +43,9 @@ void zs_raster_begin(zs_renderer *r)
     r->priv.n_sorted = 0;
     r->priv.steep = 0;
     r->priv.background = zs_background_word(r); /* packed once a frame */
+    r->priv.row_fn = r->priv.mode == ZS_MODE_ZLINE      ? zs_zline_row
+                     : r->priv.mode == ZS_MODE_PRIORITY ? zs_priority_row
+                                                        : zs_span_row;
     reverse_buckets(r);
 }
 
@@ -291,10 +294,7 @@ void zs_raster_row(zs_renderer *r, int y, uint8_t *row)
     if (sides > r->stats.max_active_edges)
         r->stats.max_active_edges = sides;
     if (row) {
-        if (r->priv.mode == ZS_MODE_ZLINE)
-            zs_zline_row(r, y, row);
-        else
-            zs_span_row(r, y, row);
+        r->priv.row_fn(r, y, row); /* the mode's walk, chosen once a frame */
     }
     step_edges(r, y);
 }

@@ -27,7 +27,7 @@ static zs_status check_config(const zs_config *c)
         c->max_active_edges > ZS_MAX_ACTIVE_EDGES)
         return ZS_ERR_CAPACITY;
     if (c->flags & ~(uint16_t)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES |
-                               ZS_CFG_TEXTURE | ZS_CFG_ABUFFER))
+                               ZS_CFG_PRIORITY | ZS_CFG_TEXTURE | ZS_CFG_ABUFFER))
         return ZS_ERR_ARGUMENT;
     if ((c->flags & ZS_CFG_TEXTURE) && (c->flags & ZS_CFG_ABUFFER))
         return ZS_ERR_ARGUMENT; /* the resolve's fragments carry no texture (yet) */
@@ -52,6 +52,7 @@ static uint32_t arena_bytes32(const zs_config *c)
         ((c->flags & ZS_CFG_NO_ZLINE)
              ? 0u
              : ROUND8_32((uint32_t)c->width * 8u) + ROUND8_32((uint32_t)c->width * 2u)) +
+        ((c->flags & ZS_CFG_PRIORITY) ? 2u * ROUND8_32((uint32_t)c->max_triangles * 2u) : 0u) +
         ((c->flags & ZS_CFG_TEXTURE)
              ? ROUND8_32((uint32_t)c->max_vertices * ZS_TEX_VERTEX_BYTES) +
                    ROUND8_32(a * ZS_ACTIVE_TEX_BYTES) +
@@ -158,6 +159,10 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
         r->priv.tri_normal = carve(&cur, (size_t)cfg->max_triangles * ZS_TRI_NORMAL_BYTES);
         r->priv.draw_starts = carve(&cur, ((size_t)cfg->max_triangles + 7u) / 8u);
     }
+    if (cfg->flags & ZS_CFG_PRIORITY) {
+        r->priv.sort_list = carve(&cur, (size_t)cfg->max_triangles * 2u);
+        r->priv.sort_aux = carve(&cur, (size_t)cfg->max_triangles * 2u);
+    }
     if (cfg->flags & ZS_CFG_TEXTURE) {
         r->priv.tex_verts = carve(&cur, (size_t)cfg->max_vertices * sizeof(zs_tex_vert));
         r->priv.atex = carve(&cur, a * sizeof(zs_active_tex));
@@ -195,7 +200,8 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
         return ZS_ERR_NULL;
     if (r->priv.state == ZS_STATE_NONE)
         return ZS_ERR_STATE;
-    if (mode != ZS_MODE_SPAN && mode != ZS_MODE_ZLINE && mode != ZS_MODE_WARNOCK)
+    if (mode != ZS_MODE_SPAN && mode != ZS_MODE_ZLINE && mode != ZS_MODE_WARNOCK &&
+        mode != ZS_MODE_PRIORITY)
         return ZS_ERR_MODE;
     if (mode == ZS_MODE_ZLINE && (r->cfg.flags & ZS_CFG_NO_ZLINE))
         return ZS_ERR_MODE;

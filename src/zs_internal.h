@@ -320,6 +320,10 @@ void zs_fill_textured(const zs_renderer *r, uint16_t ai, int32_t y, uint8_t *row
 /* span.c / zline.c: one row's visibility */
 void zs_span_row(zs_renderer *r, int y, uint8_t *row);
 void zs_zline_row(zs_renderer *r, int y, uint8_t *row);
+/* priority.c: one row by list priority (ZS_MODE_PRIORITY) */
+void zs_priority_row(zs_renderer *r, int y, uint8_t *row);
+/* bsp.c: the next triangle range [*t, *end) of a zs_draw_bsp walk; 0 at its end */
+int zs_next_range(zs_renderer *r, uint32_t *t, uint32_t *end);
 
 /* floor(v / 2^s) for either sign. Shifting ~v keeps the operand non-negative
  * (well defined in C99); compilers emit a single arithmetic shift. */

@@ -30,6 +30,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <time.h>
+
+#include "zs_bsp_build.h"
 #include "zs_import.h"
 #include "zs_opts.h"
 #include "zspan/zspan.h"
@@ -65,6 +68,8 @@ typedef struct options {
     int zsm;                 /* --format zsm: BASE.zsm instead of BASE.c + BASE.h */
     int up_axis;             /* the file's up axis (zs_opt_up_axis), 0 = its metadata */
     long mem_limit_mb;       /* address-space limit while importing; 0 = none, -1 = auto */
+    int bsp;                 /* --bsp: also a BSP tree (zspan/priority.h) */
+    long bsp_weight, bsp_candidates;
 } options;
 
 typedef struct vert {
@@ -836,6 +841,8 @@ typedef struct out_mesh {
     int16_t *fnrm;       /* 3 per face, or NULL */
     int16_t *vnrm;       /* 3 per vertex, or NULL */
     uint32_t color;
+    size_t nv, nt;       /* counts (a BSP build splits triangles) */
+    zs_bspb_result bsp;  /* --bsp: the tree; its mesh holds the arrays above */
 } out_mesh;
 
 static void build_output(const options *o, const model *m, long qscale, out_mesh *om)
@@ -910,6 +917,57 @@ static void build_output(const options *o, const model *m, long qscale, out_mesh
     om->color = o->base_color;
     if (o->colors == COL_MATERIAL && !om->fcol && m->nt)
         om->color = m->t[0].color;
+    om->nv = m->nv;
+    om->nt = m->nt;
+}
+
+/* --bsp: the tree from the quantised mesh; its triangles (split ones and
+ * all, in node order) replace the mesh's. */
+static void build_bsp(const options *o, out_mesh *om)
+{
+    zs_bspb_mesh in;
+    zs_bspb_params p;
+    const char *err;
+    clock_t t0 = clock();
+    double ms;
+    memset(&in, 0, sizeof in);
+    in.pos = om->pos;
+    in.idx = om->idx;
+    in.fcol = om->fcol;
+    in.fnrm = om->fnrm;
+    in.vcol = om->vcol;
+    in.vnrm = om->vnrm;
+    in.nv = om->nv;
+    in.nt = om->nt;
+    p.split_weight = (int)o->bsp_weight;
+    p.candidates = (int)o->bsp_candidates;
+    err = zs_bspb_build(&in, &p, &om->bsp);
+    if (err)
+        die(EXIT_LIMIT, "--bsp: %s", err);
+    ms = (double)(clock() - t0) * 1000.0 / CLOCKS_PER_SEC;
+    if (!o->quiet)
+        fprintf(stderr,
+                "%s: %s: BSP: %zu nodes, %zu -> %zu triangles (%zu splits, %zu slivers, %zu "
+                "without area left out), %zu -> %zu vertices, walk stack %d, largest "
+                "rounding %.3f units, built in %.1f ms\n",
+                g_prog, g_input, om->bsp.node_count, om->nt, om->bsp.mesh.nt, om->bsp.splits,
+                om->bsp.slivers, om->bsp.dropped, om->nv, om->bsp.mesh.nv, om->bsp.stack,
+                om->bsp.max_snap, ms);
+    free(om->pos);
+    free(om->idx);
+    free(om->fcol);
+    free(om->fnrm);
+    free(om->vcol);
+    free(om->vnrm);
+    om->pos = om->bsp.mesh.pos;
+    om->idx = om->bsp.mesh.idx;
+    om->fcol = om->bsp.mesh.fcol;
+    om->fnrm = om->bsp.mesh.fnrm;
+    om->vcol = om->bsp.mesh.vcol;
+    om->vnrm = om->bsp.mesh.vnrm;
+    om->nv = om->bsp.mesh.nv;
+    om->nt = om->bsp.mesh.nt;
+    memset(&om->bsp.mesh, 0, sizeof om->bsp.mesh);
 }
 
 static void free_output(out_mesh *om)
@@ -920,6 +978,7 @@ static void free_output(out_mesh *om)
     free(om->vcol);
     free(om->fnrm);
     free(om->vnrm);
+    zs_bspb_free(&om->bsp);
 }
 
 static void put_le(FILE *f, uint32_t v, int bytes)
@@ -930,7 +989,7 @@ static void put_le(FILE *f, uint32_t v, int bytes)
 }
 
 /* BASE.zsm: the binary mesh zspan-sim reads (layout: app/zs_model.h). */
-static void write_zsm(const options *o, const model *m, long qscale, const out_mesh *om)
+static void write_zsm(const options *o, long qscale, const out_mesh *om)
 {
     size_t len = strlen(o->output), i;
     char *path = xrealloc(NULL, len + 5);
@@ -946,19 +1005,19 @@ static void write_zsm(const options *o, const model *m, long qscale, const out_m
     put_le(f, flags, 4);
     put_le(f, (uint32_t)qscale, 4);
     put_le(f, om->color & 0xFFFFFFu, 4);
-    put_le(f, (uint32_t)m->nv, 2);
-    put_le(f, (uint32_t)m->nt, 2);
-    for (i = 0; i < m->nv * 3; i++)
+    put_le(f, (uint32_t)om->nv, 2);
+    put_le(f, (uint32_t)om->nt, 2);
+    for (i = 0; i < om->nv * 3; i++)
         put_le(f, (uint32_t)(uint16_t)om->pos[i], 2);
-    for (i = 0; i < m->nt * 3; i++)
+    for (i = 0; i < om->nt * 3; i++)
         put_le(f, om->idx[i], 2);
-    for (i = 0; om->fcol && i < m->nt; i++)
+    for (i = 0; om->fcol && i < om->nt; i++)
         put_le(f, om->fcol[i], 4);
-    for (i = 0; om->vcol && i < m->nv; i++)
+    for (i = 0; om->vcol && i < om->nv; i++)
         put_le(f, om->vcol[i], 4);
-    for (i = 0; om->fnrm && i < m->nt * 3; i++)
+    for (i = 0; om->fnrm && i < om->nt * 3; i++)
         put_le(f, (uint32_t)(uint16_t)om->fnrm[i], 2);
-    for (i = 0; om->vnrm && i < m->nv * 3; i++)
+    for (i = 0; om->vnrm && i < om->nv * 3; i++)
         put_le(f, (uint32_t)(uint16_t)om->vnrm[i], 2);
     if (ferror(f) | (fclose(f) != 0))
         die(EXIT_IO, "cannot write %s", path);
@@ -987,8 +1046,10 @@ static void write_files(const options *o, const model *m, const char *name, long
     out_mesh om;
 
     build_output(o, m, qscale, &om);
+    if (o->bsp)
+        build_bsp(o, &om);
     if (o->zsm) {
-        write_zsm(o, m, qscale, &om);
+        write_zsm(o, qscale, &om);
         free_output(&om);
         return;
     }
@@ -1014,11 +1075,17 @@ static void write_files(const options *o, const model *m, const char *name, long
         die(EXIT_IO, "cannot write %s: %s", hpath, strerror(errno));
     fprintf(fh,
             "/* Generated by zspan-meshc " MESHC_VERSION " from %s. Do not edit. */\n"
-            "#ifndef %s\n#define %s\n\n#include \"zspan/zspan.h\"\n\n"
+            "#ifndef %s\n#define %s\n\n#include \"zspan/%s.h\"\n\n"
             "#define %s_VERTEX_COUNT %zuu\n#define %s_TRIANGLE_COUNT %zuu\n"
             "/* Q16.16 scale of the int16 positions. */\n#define %s_SCALE %ld\n\n"
-            "extern const zs_mesh %s;\n\n#endif\n",
-            g_input, guard, guard, upper, m->nv, upper, m->nt, upper, qscale, name);
+            "extern const zs_mesh %s;\n",
+            g_input, guard, guard, o->bsp ? "priority" : "zspan", upper, om.nv, upper, om.nt,
+            upper, qscale, name);
+    if (o->bsp)
+        fprintf(fh, "/* Its BSP tree (zspan-meshc --bsp): draw with zs_draw_bsp. */\n"
+                    "#define %s_BSP_NODE_COUNT %zuu\nextern const zs_bsp %s_bsp;\n",
+                upper, om.bsp.node_count, name);
+    fprintf(fh, "\n#endif\n");
     if (fclose(fh) != 0)
         die(EXIT_IO, "cannot write %s", hpath);
 
@@ -1026,7 +1093,7 @@ static void write_files(const options *o, const model *m, const char *name, long
     if (!fc)
         die(EXIT_IO, "cannot write %s: %s", cpath, strerror(errno));
     fprintf(fc, "/* Generated by zspan-meshc " MESHC_VERSION " from %s. Do not edit.\n", g_input);
-    fprintf(fc, " * %zu vertices, %zu triangles; model = int16 * %ld / 65536.\n", m->nv, m->nt,
+    fprintf(fc, " * %zu vertices, %zu triangles; model = int16 * %ld / 65536.\n", om.nv, om.nt,
             qscale);
     fprintf(fc, " * Source bounding box before transform: (%.6g %.6g %.6g) .. (%.6g %.6g %.6g)\n",
             lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
@@ -1034,14 +1101,14 @@ static void write_files(const options *o, const model *m, const char *name, long
             xform_shift[0], xform_shift[1], xform_shift[2], xform_scale, radius);
     fprintf(fc, " */\n#include \"%s\"\n\n", hname);
 
-    sprintf(buf, "static const int16_t %s_positions[%zu]", name, m->nv * 3);
+    sprintf(buf, "static const int16_t %s_positions[%zu]", name, om.nv * 3);
     emit_begin(&e, fc, buf);
-    emit_i16(&e, om.pos, m->nv * 3);
+    emit_i16(&e, om.pos, om.nv * 3);
     emit_end(&e);
 
-    sprintf(buf, "static const uint16_t %s_indices[%zu]", name, m->nt * 3);
+    sprintf(buf, "static const uint16_t %s_indices[%zu]", name, om.nt * 3);
     emit_begin(&e, fc, buf);
-    for (i = 0; i < m->nt * 3; i++) {
+    for (i = 0; i < om.nt * 3; i++) {
         char s[16];
         sprintf(s, "%u", (unsigned)om.idx[i]);
         emit_val(&e, s);
@@ -1049,9 +1116,9 @@ static void write_files(const options *o, const model *m, const char *name, long
     emit_end(&e);
 
     if (om.fcol) {
-        sprintf(buf, "static const zs_color %s_face_colors[%zu]", name, m->nt);
+        sprintf(buf, "static const zs_color %s_face_colors[%zu]", name, om.nt);
         emit_begin(&e, fc, buf);
-        for (i = 0; i < m->nt; i++) {
+        for (i = 0; i < om.nt; i++) {
             char s[16];
             sprintf(s, "0x%06lX", (unsigned long)om.fcol[i]);
             emit_val(&e, s);
@@ -1059,9 +1126,9 @@ static void write_files(const options *o, const model *m, const char *name, long
         emit_end(&e);
     }
     if (om.vcol) {
-        sprintf(buf, "static const zs_color %s_vertex_colors[%zu]", name, m->nv);
+        sprintf(buf, "static const zs_color %s_vertex_colors[%zu]", name, om.nv);
         emit_begin(&e, fc, buf);
-        for (i = 0; i < m->nv; i++) {
+        for (i = 0; i < om.nv; i++) {
             char s[16];
             sprintf(s, "0x%06lX", (unsigned long)om.vcol[i]);
             emit_val(&e, s);
@@ -1069,15 +1136,15 @@ static void write_files(const options *o, const model *m, const char *name, long
         emit_end(&e);
     }
     if (om.fnrm) {
-        sprintf(buf, "static const int16_t %s_face_normals[%zu]", name, m->nt * 3);
+        sprintf(buf, "static const int16_t %s_face_normals[%zu]", name, om.nt * 3);
         emit_begin(&e, fc, buf);
-        emit_i16(&e, om.fnrm, m->nt * 3);
+        emit_i16(&e, om.fnrm, om.nt * 3);
         emit_end(&e);
     }
     if (om.vnrm) {
-        sprintf(buf, "static const int16_t %s_vertex_normals[%zu]", name, m->nv * 3);
+        sprintf(buf, "static const int16_t %s_vertex_normals[%zu]", name, om.nv * 3);
         emit_begin(&e, fc, buf);
-        emit_i16(&e, om.vnrm, m->nv * 3);
+        emit_i16(&e, om.vnrm, om.nv * 3);
         emit_end(&e);
     }
 
@@ -1101,8 +1168,22 @@ static void write_files(const options *o, const model *m, const char *name, long
         fprintf(fc, "    NULL, /* vertex_normals */\n");
     fprintf(fc, "    %ld, /* scale, Q16.16 */\n    %zuu, /* vertex_count */\n"
                 "    %zuu, /* triangle_count */\n    0x%06lXu, /* color */\n",
-            qscale, m->nv, m->nt, (unsigned long)om.color);
+            qscale, om.nv, om.nt, (unsigned long)om.color);
     fprintf(fc, "    NULL, /* uvs */\n    NULL /* texture */\n};\n");
+    if (o->bsp) {
+        /* nodes: {d, {n}, front, back, first, n_front, n_back} (zspan/priority.h) */
+        fprintf(fc, "\nstatic const zs_bsp_node %s_bsp_nodes[%zu] = {\n", name,
+                om.bsp.node_count);
+        for (i = 0; i < om.bsp.node_count; i++) {
+            const zs_bsp_node *nd = &om.bsp.nodes[i];
+            fprintf(fc, "    {%lld, {%ld, %ld, %ld}, %u, %u, %u, %u, %u},\n", (long long)nd->d,
+                    (long)nd->n[0], (long)nd->n[1], (long)nd->n[2], (unsigned)nd->front,
+                    (unsigned)nd->back, (unsigned)nd->first, (unsigned)nd->n_front,
+                    (unsigned)nd->n_back);
+        }
+        fprintf(fc, "};\n\nconst zs_bsp %s_bsp = {%s_bsp_nodes, &%s, %zuu};\n", name, name, name,
+                om.bsp.node_count);
+    }
     if (fclose(fc) != 0)
         die(EXIT_IO, "cannot write %s", cpath);
     free(cpath);
@@ -1142,6 +1223,11 @@ static void usage(FILE *f)
         "      --color RRGGBB    the mesh colour (default FFFFFF)\n"
         "      --normals KIND    none (default), face, smooth (area-weighted per vertex),\n"
         "                        file (per vertex from the model; keeps split vertices)\n"
+        "      --bsp             also a BSP tree for zs_draw_bsp (zspan/priority.h): the\n"
+        "                        triangles split where they straddle a splitting plane and\n"
+        "                        ordered by node; NAME_bsp in the C file\n"
+        "      --bsp-weight W    splitter score W * splits + |front - back| (default 8)\n"
+        "      --bsp-candidates K  splitters scored per node (default 24)\n"
         "      --no-merge        keep the importer's vertices (default: merge vertices\n"
         "                        with identical positions and output attributes)\n"
         "      --flip-winding    reverse every triangle (front faces must be CCW)\n"
@@ -1257,6 +1343,11 @@ static void parse_args(int argc, char **argv, options *o)
             o->normals = (enum normal_kind)k;
         } else if (long_arg(argc, argv, &i, "--mem-limit", 0, LONG_MAX >> 20, &o->mem_limit_mb)) {
             continue;
+        } else if (!strcmp(a, "--bsp")) {
+            o->bsp = 1;
+        } else if (long_arg(argc, argv, &i, "--bsp-weight", 1, 1000, &o->bsp_weight) ||
+                   long_arg(argc, argv, &i, "--bsp-candidates", 1, 100000, &o->bsp_candidates)) {
+            continue;
         } else if (!strcmp(a, "--no-merge")) {
             o->merge = 0;
         } else if (!strcmp(a, "--flip-winding")) {
@@ -1280,6 +1371,11 @@ static void parse_args(int argc, char **argv, options *o)
     }
     if (!o->input) {
         usage(stderr);
+        exit(EXIT_USAGE);
+    }
+    if (o->bsp && o->zsm) {
+        fprintf(stderr, "%s: error: --bsp writes C arrays; it does not go with --format zsm\n",
+                g_prog);
         exit(EXIT_USAGE);
     }
     if (o->name && ident_problem(o->name) != NULL) {

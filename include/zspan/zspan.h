@@ -126,6 +126,7 @@ typedef enum zs_status {
     ZS_ERR_ARGUMENT,      /* any other argument out of its documented range */
     ZS_ERR_LEVEL,         /* malformed level or PVS data (zspan/portal.h) */
     ZS_ERR_TEXTURE,       /* bad texture: see zs_texture_check */
+    ZS_ERR_BSP,           /* malformed BSP tree or scene cells (zspan/priority.h) */
     ZS_STATUS_COUNT
 } zs_status;
 
@@ -152,6 +153,9 @@ const char *zs_strerror(zs_status status);
                                     triangle ids and a flag line (5 B per column,
                                     1 B shared with ZS_CFG_MONO) and a normal and
                                     a draw-start bit per triangle record (8 B + 1 bit) */
+#define ZS_CFG_PRIORITY 0x40u    /* depth sorting for ZS_MODE_PRIORITY (zs_depth_sort,
+                                    zspan/priority.h): a list and a work word per
+                                    triangle record, 4 B */
 #define ZS_CFG_TEXTURE 0x10u     /* texture mapping (zs_mesh.uvs, zs_mesh.texture):
                                     6 B per vertex, ZS_ACTIVE_TEX_BYTES per active
                                     triangle (and the shade words and colour
@@ -187,7 +191,7 @@ const char *zs_strerror(zs_status status);
  * 2 B per row, edges 32 B, active triangles 60 B (+36 B colour planes), the
  * z-buffer line 10 B per column; with ZS_CFG_MONO 3 B per column, with
  * ZS_CFG_LINES 5 B per column (4 with ZS_CFG_MONO too) and 8 B and 1 bit
- * per triangle record. */
+ * per triangle record; with ZS_CFG_PRIORITY 4 B per triangle record. */
 #define ZS_ARENA_BYTES_CFG(w, h, max_tris, max_verts, max_edges, flags)            \
     (ZS_ROUND8_((size_t)(max_verts) * ZS_VERTEX_BYTES) +                            \
      ((((flags) & (ZS_CFG_FLAT_ONLY | ZS_CFG_TEXTURE)) == ZS_CFG_FLAT_ONLY)         \
@@ -210,6 +214,7 @@ const char *zs_strerror(zs_status status);
                                      ZS_ROUND8_((size_t)(max_tris) * ZS_TRI_NORMAL_BYTES) + \
                                      ZS_ROUND8_(((size_t)(max_tris) + 7u) / 8u)     \
                                : 0u) +                                              \
+     (((flags) & ZS_CFG_PRIORITY) ? 2u * ZS_ROUND8_((size_t)(max_tris) * 2u) : 0u) +   \
      (((flags) & ZS_CFG_TEXTURE)                                                    \
           ? ZS_ROUND8_((size_t)(max_verts) * ZS_TEX_VERTEX_BYTES) +                 \
                 ZS_ROUND8_((size_t)((max_edges) / 2u) * ZS_ACTIVE_TEX_BYTES) +      \
@@ -372,9 +377,11 @@ zs_status zs_texture_check(const zs_texture *t);
 typedef enum zs_visibility {
     ZS_MODE_SPAN = 0,   /* spanning scanline: one depth decision per span */
     ZS_MODE_ZLINE = 1,  /* scanline z-buffer: a depth per pixel of the row */
-    ZS_MODE_WARNOCK = 3 /* area subdivision (Warnock) of each band's rectangle:
-                           the same image as the other modes (README: Warnock
-                           mode); zs_stats.windows, .pixel_decisions */
+    ZS_MODE_PRIORITY = 2, /* list priority: the earliest stored triangle wins, no depth
+                             test (zspan/priority.h: BSP or depth-sorted order) */
+    ZS_MODE_WARNOCK = 3   /* area subdivision (Warnock) of each band's rectangle:
+                             the same image as the other modes (README: Warnock
+                             mode); zs_stats.windows, .pixel_decisions */
 } zs_visibility;
 
 typedef enum zs_shading {
@@ -503,6 +510,18 @@ typedef struct zs_stats {
                                   rectangles and every quadrant split off) */
     uint32_t pixel_decisions;  /* ZS_MODE_WARNOCK: one-pixel windows decided by
                                   the pixel-centre rule */
+    /* list priority (zspan/priority.h); 0 in frames that do not use it */
+    uint32_t bsp_nodes;        /* BSP nodes visited */
+    uint32_t bsp_pruned;       /* triangles skipped because their node plane faces away */
+    uint32_t sort_pairs;       /* depth sort: overlapping pairs the tests had to resolve */
+    uint32_t sort_swaps;       /* depth sort: triangles moved ahead of their place */
+    uint32_t sort_splits;      /* depth sort: triangles split for cycles or penetrations */
+    uint32_t sort_giveups;     /* depth sort: pairs left as sorted (work or pool bound hit) */
+    uint32_t tris_untransformed;  /* triangles of draws culled by their bounds: no vertex
+                                     transformed (counted in tris_submitted and
+                                     tris_rejected too) */
+    uint32_t verts_untransformed; /* their vertices */
+    uint32_t cells_culled;     /* scene cells culled whole against the frustum */
     /* A-buffer (zs_frame_antialias; 0 when it is off) */
     uint32_t aa_pixels;        /* pixels resolved from sub-samples */
     uint32_t aa_fragments;     /* fragments (triangle, mask) they were resolved from */
@@ -528,6 +547,7 @@ struct zs_tri;
 struct zs_edge;
 struct zs_active;
 struct zs_active_color;
+struct zs_renderer;
 
 /* The renderer's private state: pools carved from the arena and the frame
  * in progress. It may change between versions; do not use it. */
@@ -585,6 +605,11 @@ typedef struct zs_renderer_private {
     uint16_t tall_rows;               /* Warnock, picking: most rows a record spans
                                          (0xFFFF: not yet counted this frame) */
     uint8_t rows_kind;                /* how zs_render_rows makes rows this frame */
+    void *ranges;                     /* zs_draw_bsp: the walk giving zs_draw its
+                                         triangle ranges, NULL otherwise */
+    uint16_t *sort_list;              /* ZS_CFG_PRIORITY: zs_depth_sort's list */
+    uint16_t *sort_aux;               /* ZS_CFG_PRIORITY: its marks, then new numbers */
+    void (*row_fn)(struct zs_renderer *r, int y, uint8_t *row); /* the frame's row walk */
     /* A-buffer (abuffer.c) */
     struct zs_aa_state *aa;           /* its pools; NULL without ZS_CFG_ABUFFER */
     uint8_t aa_mode;                  /* zs_aa_mode of the frame */

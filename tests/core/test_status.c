@@ -158,6 +158,16 @@ static const code_spec k_specs[] = {
       {"texture", {"texture"}},
       {"see", {"see zs_texture_check"}},
       {"zs_texture_check", {"zs_texture_check"}}}},
+    {ZS_ERR_BSP,
+     "ZS_ERR_BSP",
+     {{"malformed", {"malformed"}},
+      {"BSP", {"BSP"}},
+      {"tree", {"tree"}},
+      {"scene", {"scene"}},
+      {"cells", {"cells"}},
+      {"zspan", {"zspan/priority.h"}},
+      {"priority", {"zspan/priority.h"}},
+      {"h", {"zspan/priority.h"}}}},
 };
 
 /* Words of a header comment that carry no meaning of their own. */

@@ -1,0 +1,172 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * fuzz_priority: list priority and culling (zspan/priority.h, zspan/cull.h)
+ * from arbitrary bytes (libFuzzer).
+ *
+ * The input builds a small mesh (up to 24 vertices, 32 triangles), a BSP
+ * node array (up to 40 nodes, every field from the bytes), a cell array over
+ * a few objects, and a camera. Then: zs_bsp_check and zs_draw_bsp in
+ * ZS_MODE_PRIORITY; zs_cells_check and zs_draw_cells; the mesh drawn again
+ * and zs_depth_sort (NNS or plain, a small budget); every frame rendered.
+ *
+ * Invariants: the checks give ZS_OK or ZS_ERR_BSP (ZS_ERR_NULL never, as
+ * nothing is NULL); a draw of a refused tree or scene gives the same error
+ * and submits nothing; a good tree's walk visits every node once; the
+ * statistics add up; the sort keeps within the pools and its budget
+ * (pairs resolved <= budget). ASan and UBSan
+ * catch the rest; -timeout catches a walk or sort that does not end.
+ */
+#include <stdint.h>
+#include <string.h>
+
+#include "fuzz_util.h"
+#include "zspan/cull.h"
+#include "zspan/priority.h"
+
+#define FW 40
+#define FH 30
+#define NV 24
+#define NT 32
+#define NN 40
+#define NC 12
+
+static void render(zs_renderer *r)
+{
+    static uint8_t row[FW * 2];
+    int y;
+    for (y = 0; y < FH; y++)
+        FZ_CHECK(zs_render_rows(r, y, 1, row, sizeof row) == ZS_OK, "row %d", y);
+}
+
+static void check_stats(const zs_stats *s)
+{
+    FZ_CHECK(s->tris_submitted ==
+                 s->tris_culled + s->tris_rejected + s->tris_empty + s->tris_dropped + s->tris_stored,
+             "statistics do not add up");
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    static uint8_t arena[ZS_ARENA_BYTES_CFG(FW, FH, 400, 600, 256, ZS_CFG_PRIORITY)];
+    static int16_t pos[3 * NV];
+    static uint16_t idx[3 * NT];
+    static zs_bsp_node nodes[NN];
+    static zs_cell cells[NC];
+    static zs_scene_object objs[4];
+    fz_reader d;
+    zs_renderer r;
+    zs_config cfg = zs_config_default(FW, FH, 400, 600, 256);
+    zs_camera cam;
+    zs_mesh mesh;
+    zs_bsp bsp;
+    zs_cells sc;
+    zs_status chk, st;
+    uint32_t nv, nt, nn, nc, k, budget;
+    fz_init(&d, data, size);
+    cfg.flags = ZS_CFG_PRIORITY;
+    if (zs_init(&r, arena, sizeof arena, &cfg) != ZS_OK)
+        return 0;
+    nv = 3 + fz_u8(&d) % (NV - 2);
+    nt = 1 + fz_u8(&d) % NT;
+    for (k = 0; k < 3 * nv; k++)
+        pos[k] = (int16_t)((int8_t)fz_u8(&d) * 4);
+    for (k = 0; k < 3 * nt; k++)
+        idx[k] = (uint16_t)(fz_u8(&d) % nv);
+    memset(&mesh, 0, sizeof mesh);
+    mesh.positions = pos;
+    mesh.indices = idx;
+    mesh.scale = ZS_FX(1) / 64;
+    mesh.vertex_count = (uint16_t)nv;
+    mesh.triangle_count = (uint16_t)nt;
+    mesh.color = 0xFFFFFF;
+    /* nodes: mostly near-valid (children next, ranges small), any field may be off */
+    nn = 1 + fz_u8(&d) % NN;
+    for (k = 0; k < nn; k++) {
+        zs_bsp_node *n = &nodes[k];
+        uint8_t how = fz_u8(&d);
+        n->n[0] = (int8_t)fz_u8(&d);
+        n->n[1] = (int8_t)fz_u8(&d);
+        n->n[2] = (int8_t)fz_u8(&d);
+        n->d = (int64_t)(int16_t)fz_u16(&d);
+        n->front = (how & 1) && k + 1 < nn ? (uint16_t)(k + 1) : ZS_BSP_NONE;
+        n->back = (how & 2) ? (uint16_t)(k + 1 + fz_u8(&d) % 8) : ZS_BSP_NONE;
+        n->first = (uint16_t)(fz_u8(&d) % (nt + 2));
+        n->n_front = (uint16_t)(fz_u8(&d) % 4);
+        n->n_back = (uint16_t)(fz_u8(&d) % 4);
+        if (how & 0x80) /* wild */
+            n->front = fz_u16(&d), n->n[1] = (int32_t)fz_u32(&d);
+    }
+    bsp.nodes = nodes;
+    bsp.mesh = &mesh;
+    bsp.node_count = (uint16_t)nn;
+    if (zs_camera_look_at(&cam, zs_vec3_make((int8_t)fz_u8(&d) * 4096, (int8_t)fz_u8(&d) * 4096,
+                                             ZS_FX(3) + (int8_t)fz_u8(&d) * 2048),
+                          zs_vec3_make(0, 0, 0), zs_vec3_make(0, ZS_FX(1), 0)) != ZS_OK ||
+        zs_camera_perspective(&cam, ZS_FX(60), ZS_FX(1) / 10, ZS_FX(50)) != ZS_OK)
+        return 0;
+
+    chk = zs_bsp_check(&bsp);
+    FZ_CHECK(chk == ZS_OK || chk == ZS_ERR_BSP, "bsp check gave %d", (int)chk);
+    FZ_CHECK(zs_frame_begin(&r, &cam, ZS_MODE_PRIORITY) == ZS_OK, "frame_begin");
+    st = zs_draw_bsp(&r, &bsp, NULL);
+    if (chk != ZS_OK) {
+        FZ_CHECK(st == chk && r.stats.tris_submitted == 0, "a refused tree drew (%d)", (int)st);
+    } else if (st == ZS_OK) {
+        FZ_CHECK(r.stats.bsp_nodes == nn, "%u nodes visited of %u", r.stats.bsp_nodes, nn);
+    } else {
+        FZ_CHECK(st == ZS_ERR_INDEX || st == ZS_ERR_MESH, "draw_bsp gave %d", (int)st);
+    }
+    check_stats(&r.stats);
+    render(&r);
+
+    /* cells over up to 4 objects (the same mesh) */
+    nc = 1 + fz_u8(&d) % NC;
+    for (k = 0; k < 4; k++) {
+        objs[k].mesh = &mesh;
+        objs[k].model = NULL;
+        zs_mesh_bounds(&mesh, &objs[k].bounds);
+    }
+    for (k = 0; k < nc; k++) {
+        zs_cell *c = &cells[k];
+        int j;
+        for (j = 0; j < 3; j++) {
+            c->lo[j] = -(zs_fixed)(fz_u8(&d) * 1024);
+            c->hi[j] = (zs_fixed)((int8_t)fz_u8(&d) * 1024);
+        }
+        c->first_child = (uint16_t)(fz_u8(&d) % (nc + 1));
+        c->child_count = (uint16_t)(fz_u8(&d) % 3);
+        c->first_object = (uint16_t)(fz_u8(&d) % 5);
+        c->object_count = (uint16_t)(fz_u8(&d) % 5);
+    }
+    sc.cells = cells;
+    sc.objects = objs;
+    sc.cell_count = (uint16_t)nc;
+    sc.object_count = (uint16_t)(fz_u8(&d) % 5);
+    chk = zs_cells_check(&sc);
+    FZ_CHECK(chk == ZS_OK || chk == ZS_ERR_BSP, "cells check gave %d", (int)chk);
+    FZ_CHECK(zs_frame_begin(&r, &cam, ZS_MODE_SPAN) == ZS_OK, "frame_begin");
+    st = zs_draw_cells(&r, &sc);
+    if (chk != ZS_OK)
+        FZ_CHECK(st == chk && r.stats.tris_submitted == 0, "a refused scene drew (%d)", (int)st);
+    if (st == ZS_OK)
+        FZ_CHECK(r.stats.tris_submitted == (uint32_t)sc.object_count * nt, "submitted %u",
+                 r.stats.tris_submitted);
+    check_stats(&r.stats);
+    render(&r);
+
+    /* the depth sort on the mesh, twice over */
+    budget = 1 + fz_u8(&d) * 8u;
+    FZ_CHECK(zs_frame_begin(&r, &cam, ZS_MODE_PRIORITY) == ZS_OK, "frame_begin");
+    st = zs_draw(&r, &mesh, NULL);
+    if (st == ZS_OK)
+        st = zs_draw(&r, &mesh, NULL);
+    if (st == ZS_OK) {
+        st = zs_depth_sort(&r, (fz_u8(&d) & 1) ? ZS_SORT_NNS : ZS_SORT_DEPTH, budget);
+        FZ_CHECK(st == ZS_OK, "depth sort gave %d", (int)st);
+        FZ_CHECK(r.stats.sort_pairs <= budget, "past the budget");
+        FZ_CHECK(r.priv.n_tris <= cfg.max_triangles && r.priv.n_verts <= cfg.max_vertices,
+                 "pools overrun");
+        render(&r);
+    }
+    return 0;
+}

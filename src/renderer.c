@@ -70,7 +70,7 @@ size_t zs_arena_bytes(const zs_config *cfg)
 #ifdef ZS_NO_MONO
 #define MONO_BUILT(f) ((void)(f), 0)
 #else
-#define MONO_BUILT(f) zs_format_is_mono(f)
+#define MONO_BUILT(f) (zs_format_is_mono(f) || (f) == ZS_FMT_GRAY4)
 #endif
 
 /* Takes n bytes (rounded up to 8) from the cursor. */
@@ -231,6 +231,12 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
                                       : !(r->cfg.flags & ZS_CFG_MONO))
             return ZS_ERR_MODE;
     }
+    if (p->format == ZS_FMT_GRAY4) { /* gray4.c: the grey scratch line of ZS_CFG_MONO */
+        if (p->mono & ~(unsigned)(ZS_GRAY4_DITHER | ZS_MONO_INVERT))
+            return ZS_ERR_ARGUMENT;
+        if (!(r->cfg.flags & ZS_CFG_MONO))
+            return ZS_ERR_MODE;
+    }
     if (p->light_count > ZS_MAX_LIGHTS || p->ambient < 0 ||
         (p->fog.enabled && p->fog.end <= p->fog.start) || p->background > 0xFFFFFFu ||
         p->fog.color > 0xFFFFFFu)
@@ -254,11 +260,13 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
     r->priv.out_format = (uint8_t)p->format;
     if (zs_format_is_mono(p->format)) /* the stages render a scratch line */
         r->shade.format = (p->mono & ZS_MONO_LINES) ? ZS_FMT_ID16 : ZS_FMT_GRAY8;
+    else if (p->format == ZS_FMT_GRAY4)
+        r->shade.format = ZS_FMT_GRAY8;
     r->priv.bpp = (uint8_t)zs_format_bytes(r->shade.format);
     return ZS_OK;
 }
 
-/* One row of a 1-bit frame: the scratch line, then dithered and packed. */
+/* One row of a 1-bit (or GRAY4) frame: the scratch line, then dithered and packed. */
 static void mono_row(zs_renderer *r, int y, uint8_t *out)
 {
 #ifdef ZS_NO_MONO
@@ -267,6 +275,11 @@ static void mono_row(zs_renderer *r, int y, uint8_t *out)
     (void)out;
 #else
     uint8_t *grey = r->priv.mono_grey;
+    if (r->priv.out_format == ZS_FMT_GRAY4) {
+        zs_raster_row(r, y, grey);
+        zs_gray4_row(r, y, grey, out);
+        return;
+    }
     if (r->shade.mono & ZS_MONO_LINES) {
         zs_raster_row(r, y, (uint8_t *)r->priv.line_ids[0]);
         zs_lines_row(r, y, grey);

@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * Firmware test: frame 0 of the sphere285 benchmark scene, both visibility
- * modes and the three 1-bit outputs (ordered dither, error diffusion, hidden
- * lines: bench_mono_frame), on the Cortex-M4 (QEMU mps2-an386) and Cortex-M0
+ * modes, the three 1-bit outputs (ordered dither, error diffusion, hidden
+ * lines) and GRAY4 rounded and dithered (bench_mono_frame), on the Cortex-M4 (QEMU mps2-an386) and Cortex-M0
  * (QEMU microbit, 16 KB RAM) images; the frame checksums must equal the
  * host's. Also checks
  * the SysTick calibration under -icount shift=0 and that no pool overflowed.
@@ -90,10 +90,10 @@ static int find_sum(const char *text, const char *board, const char *mode, unsig
     return 1;
 }
 
-/* span, zline, then the 1-bit outputs of bench_mono_frame */
-#define N_OUTPUTS 5
-static const char *const outputs[N_OUTPUTS] = {"span", "zline", "mono-bayer", "mono-diffuse",
-                                               "mono-lines"};
+/* span, zline, then the 1-bit and GRAY4 outputs of bench_mono_frame */
+#define N_OUTPUTS 7
+static const char *const outputs[N_OUTPUTS] = {"span",       "zline", "mono-bayer", "mono-diffuse",
+                                               "mono-lines", "gray4", "gray4-dither"};
 static unsigned long host_sum[N_OUTPUTS];
 
 static int host_setup(void **state)

@@ -75,11 +75,38 @@ $(STELLARIS_TEST): $(STELLARIS_TEST_SRCS) $(OLED_HDRS) $(wildcard host_sim/emu/*
 	    $(shell $(PKG_CONFIG) --libs libpng 2>/dev/null) $(TEST_LIBS)
 
 # --- benchmark -------------------------------------------------------------------
+# Each image renders 15 frames (the big scene's orbit repeats after 15) under
+# -icount shift=0; per frame: the instructions from zs_frame_begin to the last
+# byte on the wire (SPI or I2C polled: the port's own loops are counted).
+STELLARIS_BENCH_OUT := bench/results-stellaris.md
 bench-stellaris: $(OLED_FW_6965) $(OLED_FW_811) | deps
+	@mkdir -p $(BUILD)/bench
+	@{ echo "# Stellaris boards (QEMU lm3s6965evb, lm3s811evb)"; echo; \
+	   echo "Written by \`make bench-stellaris\` (mk/stellaris.mk): 15 frames of each image of"; \
+	   echo "examples/stellaris-oled under \`qemu-system-arm -icount shift=0\`. Instructions per frame"; \
+	   echo "from zs_frame_begin to the last byte on the wire (the polled bus's loops included);"; \
+	   echo "RAM = .data + .bss (the arena, the band buffer, the scene) + the stack's high water."; echo; \
+	   echo "| board | display, format | scene | instructions per frame (mean, max) | RAM used | flash |"; \
+	   echo "| ----- | --------------- | ----- | ---------------------------------- | -------- | ----- |"; } \
+	    > $(BUILD)/bench/stellaris.md
 	@for b in lm3s6965:$(OLED_FW_6965) lm3s811:$(OLED_FW_811); do \
 	    m=$${b%%:*}; elf=$${b#*:}; \
-	    echo "== $$m (qemu -M $${m}evb -icount shift=0): 10 frames"; \
-	    timeout 120 $(FW_QEMU) -M $${m}evb -nographic -monitor none -serial none -icount shift=0 \
-	        -semihosting-config enable=on,target=native,arg=frames=10 -kernel $$elf 2>&1 || exit 1; \
-	    $(ARM_SIZE) $$elf | tail -1 | awk '{print "   flash (text+data) " $$1+$$2 " B, RAM (data+bss) " $$2+$$3 " B"}'; \
+	    timeout 300 $(FW_QEMU) -M $${m}evb -nographic -monitor none -serial none -icount shift=0 \
+	        -semihosting-config enable=on,target=native,arg=frames=15 -kernel $$elf \
+	        > $(BUILD)/bench/stellaris-$$m.txt 2>&1 || { cat $(BUILD)/bench/stellaris-$$m.txt; exit 1; }; \
+	    flash=$$($(ARM_SIZE) $$elf | tail -1 | awk '{print $$1 + $$2}'); \
+	    awk -v m=$$m -v flash=$$flash ' \
+	        function kv(k, i) { for (i = 1; i <= NF; i++) if (index($$i, k "=") == 1) \
+	            return substr($$i, length(k) + 2); return "" } \
+	        /^F / { i = kv("instr") + 0; t += i; n++; if (i > mx) mx = i; if (kv("dropped") != "0") d++ } \
+	        /^M / { st = kv("static_ram"); ar = kv("arena"); su = kv("stack_used"); ss = kv("stack_size") } \
+	        END { if (!n || d) { print "bench-stellaris: " m ": no frames or pool drops" > "/dev/stderr"; exit 1 } \
+	            ram = (m == "lm3s811") ? 8192 : 65536; \
+	            what = (m == "lm3s811") ? "SSD0303 96x16 (I2C), 1-bit pages | spinning lit cube, 12 triangles" \
+	                                    : "SSD0323 128x64 (SPI), GRAY4 dithered | demo scene (16x8 torus), 586 triangles, Gouraud, fog"; \
+	            printf "| %s | %s | %.3f M, %.3f M | %d B (%d static, arena %d, stack %d of %d) of %d | %d B |\n", \
+	                m, what, t / n / 1e6, mx / 1e6, st + su, st, ar, su, ss, ram, flash }' \
+	        $(BUILD)/bench/stellaris-$$m.txt >> $(BUILD)/bench/stellaris.md || exit 1; \
 	done
+	@cp $(BUILD)/bench/stellaris.md $(STELLARIS_BENCH_OUT)
+	@tail -2 $(STELLARIS_BENCH_OUT)

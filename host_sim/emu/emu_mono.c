@@ -17,11 +17,12 @@ static const emu_mono_model models[] = {
     {"ssd1306-128x32", EMU_MONO_SSD1306, 128, 64, 128, 32, 0, 1, 1, 0, 0},
     /* 1.3": 132 SEG lines, the glass on SEG2..SEG129 */
     {"sh1106-132x64", EMU_MONO_SH1106, 132, 64, 128, 64, 2, 1, 1, 1, 0},
-    /* OSRAM Pictiva 96x16 (Stellaris LM3S811 board): 132 SEG lines, the glass
-     * on SEG36..SEG131 left to right and COM0..COM15 top down, in sequence */
-    {"ssd0303-96x16", EMU_MONO_SSD0303, 132, 64, 96, 16, 36, 0, 0, 0, 0},
     /* 2.13" e-paper: 176 x 296 RAM, glass on sources 0..121, gates 0..249 */
     {"ssd1680-122x250", EMU_MONO_SSD1680, 176, 296, 122, 250, 0, 0, 0, 0, 4000},
+    /* OSRAM Pictiva 96x16 (Stellaris LM3S811 board): 132 SEG lines, the glass
+     * on SEG36..SEG131 left to right and COM0..COM15 top down, in sequence
+     * (last: the fuzz corpus picks models by index) */
+    {"ssd0303-96x16", EMU_MONO_SSD0303, 132, 64, 96, 16, 36, 0, 0, 0, 0},
 };
 
 unsigned emu_mono_model_count(void)

@@ -110,3 +110,14 @@ bench-stellaris: $(OLED_FW_6965) $(OLED_FW_811) | deps
 	done
 	@cp $(BUILD)/bench/stellaris.md $(STELLARIS_BENCH_OUT)
 	@tail -2 $(STELLARIS_BENCH_OUT)
+
+# --- the emulated SSD0323 joins the fuzz harnesses of mk/fuzz.mk ------------------
+FUZZ_HARNESSES += gray
+test-fuzz-smoke fuzz fuzz-merge fuzz-build: $(FUZZ_DIR)/fuzz_gray
+$(FUZZ_DIR)/emu/emu_gray.o: host_sim/emu/emu_gray.c host_sim/emu/emu_gray.h host_sim/emu/emu_mono.h | deps
+	@mkdir -p $(@D)
+	$(FUZZ_CC) -std=c99 -g -O1 -Iinclude $(FUZZ_SAN) -fsanitize=fuzzer-no-link -c $< -o $@
+$(FUZZ_DIR)/fuzz_gray: tests/fuzz/fuzz_gray.c tests/fuzz/fuzz_util.h $(FUZZ_DIR)/emu/emu_gray.o \
+                       $(FUZZ_DIR)/emu/emu_png.o $(FUZZ_DIR)/mcp2210/drivers/bus.o | deps
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -Ihost_sim/emu -fsanitize=fuzzer -o $@ $< $(FUZZ_DIR)/emu/emu_gray.o \
+	    $(FUZZ_DIR)/emu/emu_png.o $(FUZZ_DIR)/mcp2210/drivers/bus.o $(FUZZ_PNG_LIBS)

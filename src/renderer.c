@@ -284,6 +284,8 @@ static void mono_row(zs_renderer *r, int y, uint8_t *out)
     uint8_t *grey = r->priv.mono_grey;
     if (r->priv.out_format == ZS_FMT_GRAY4) {
         zs_raster_row(r, y, grey);
+        if (r->priv.aa_mode)
+            zs_abuffer_row(r, y, grey);
         zs_gray4_row(r, y, grey, out);
         return;
     }

@@ -98,6 +98,7 @@ static int find_sum(const char *text, const char *board, const char *mode, unsig
 static const char *const outputs[N_OUTPUTS] = {
     "span", "zline", "mono-bayer", "mono-diffuse", "mono-lines", "gray4", "gray4-dither",
     "tex-plain", "tex-nearest", "tex-nearest-zline", "tex-subdiv", "tex-bilinear", "tex-lit-fog"};
+#define TEX_FIRST 7 /* outputs[TEX_FIRST] is "tex-plain" */
 static unsigned long host_sum[N_OUTPUTS];
 
 static int host_setup(void **state)
@@ -119,9 +120,10 @@ static int host_setup(void **state)
             }
     }
     /* the textured frame is the same in both modes, and textured at all */
-    if (host_sum[6] != host_sum[7] || host_sum[5] == host_sum[6]) {
+    if (host_sum[TEX_FIRST + 1] != host_sum[TEX_FIRST + 2] ||
+        host_sum[TEX_FIRST] == host_sum[TEX_FIRST + 1]) {
         fprintf(stderr, "host textured checksums: plain %08lx nearest %08lx zline %08lx\n",
-                host_sum[5], host_sum[6], host_sum[7]);
+                host_sum[TEX_FIRST], host_sum[TEX_FIRST + 1], host_sum[TEX_FIRST + 2]);
         return -1;
     }
     return 0;

@@ -145,10 +145,11 @@ void zs_app_list_panels(FILE *f)
         char size[24], ram[24];
         snprintf(size, sizeof size, "%ux%u", d->width, d->height);
         snprintf(ram, sizeof ram, "%ux%u", d->ram_width, d->ram_height);
-        fprintf(f, "%-16s %-9s %-10s %4.1f MHz %s%s%s%s\n", d->name, size, ram,
+        fprintf(f, "%-16s %-9s %-10s %4.1f MHz %s%s%s%s%s\n", d->name, size, ram,
                 d->max_spi_hz / 1e6, zs_panel_bytes_per_pixel(d, ZS_FMT_RGB565_BE) ? "rgb565 " : "",
                 zs_panel_bytes_per_pixel(d, ZS_FMT_RGB666) ? "rgb666" : "",
                 zs_panel_supports(d, ZS_FMT_MONO_PAGE) ? "1-bit pages" : "",
-                zs_panel_supports(d, ZS_FMT_MONO_MSB) ? "1-bit rows" : "");
+                zs_panel_supports(d, ZS_FMT_MONO_MSB) ? "1-bit rows" : "",
+                zs_panel_supports(d, ZS_FMT_GRAY4) ? "4-bit grey" : "");
     }
 }

@@ -63,8 +63,8 @@ zs_status bench_submit(zs_renderer *r, const zs_camera *cam, const bench_scene *
     return zs_draw(r, s->mesh, &mv);
 }
 
-const char *const bench_mono_names[BENCH_MONO_VARIANTS] = {"mono-bayer", "mono-diffuse",
-                                                            "mono-lines"};
+const char *const bench_mono_names[BENCH_MONO_VARIANTS] = {
+    "mono-bayer", "mono-diffuse", "mono-lines", "gray4", "gray4-dither"};
 
 zs_status bench_mono_frame(zs_renderer *r, const zs_camera *cam, const bench_scene *s, int k,
                            uint32_t *sum)
@@ -74,16 +74,20 @@ zs_status bench_mono_frame(zs_renderer *r, const zs_camera *cam, const bench_sce
     zs_shade_params sp = zs_shade_default();
     zs_status st = zs_frame_begin(r, cam, ZS_MODE_SPAN);
     int y;
+    int rows = k == 1 || k == 2 ? 8 : 1; /* pages of 8 rows, or single rows */
+    size_t n = k == 0 ? BENCH_W / 8 : k >= 3 ? BENCH_W / 2 : BENCH_W;
     if (st != ZS_OK)
         return st;
-    sp.format = k == 0 ? ZS_FMT_MONO_MSB : ZS_FMT_MONO_PAGE;
-    sp.mono = (uint8_t)(k == 1 ? ZS_MONO_DIFFUSE : k == 2 ? ZS_MONO_LINES : 0u);
+    sp.format = k == 0 ? ZS_FMT_MONO_MSB : k >= 3 ? ZS_FMT_GRAY4 : ZS_FMT_MONO_PAGE;
+    sp.mono = (uint8_t)(k == 1   ? ZS_MONO_DIFFUSE
+                        : k == 2 ? ZS_MONO_LINES
+                        : k == 4 ? ZS_GRAY4_DITHER
+                                 : 0u);
     if ((st = zs_frame_shading(r, &sp)) != ZS_OK || (st = zs_draw(r, s->mesh, &mv)) != ZS_OK)
         return st;
     *sum = BENCH_FNV_BASIS;
-    for (y = 0; st == ZS_OK && y < BENCH_H; y += k == 0 ? 1 : 8) {
-        size_t n = k == 0 ? BENCH_W / 8 : BENCH_W;
-        st = zs_render_rows(r, y, k == 0 ? 1 : 8, page, n);
+    for (y = 0; st == ZS_OK && y < BENCH_H; y += rows) {
+        st = zs_render_rows(r, y, rows, page, n);
         *sum = bench_fnv1a(*sum, page, n);
     }
     return st;

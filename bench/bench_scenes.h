@@ -48,9 +48,11 @@ zs_status bench_submit(zs_renderer *r, const zs_camera *cam, const bench_scene *
 /* The 1-bit outputs in the host == M4 == M0 checksum test (frame 0 of a
  * scene, span mode): 0 "mono-bayer" (ZS_FMT_MONO_MSB rows, ordered dither),
  * 1 "mono-diffuse" (ZS_FMT_MONO_PAGE pages, error diffusion), 2 "mono-lines"
- * (pages, hidden lines). The renderer needs ZS_CFG_MONO | ZS_CFG_LINES. The
- * checksum is FNV-1a 32 over the rows (MSB) or pages in order. */
-#define BENCH_MONO_VARIANTS 3
+ * (pages, hidden lines), 3 "gray4" (ZS_FMT_GRAY4 rows, rounded), 4
+ * "gray4-dither" (ZS_FMT_GRAY4, ordered dithering; issue 20). The renderer
+ * needs ZS_CFG_MONO | ZS_CFG_LINES. The checksum is FNV-1a 32 over the rows
+ * (MSB, GRAY4) or pages in order. */
+#define BENCH_MONO_VARIANTS 5
 extern const char *const bench_mono_names[BENCH_MONO_VARIANTS];
 zs_status bench_mono_frame(zs_renderer *r, const zs_camera *cam, const bench_scene *s, int k,
                            uint32_t *sum);

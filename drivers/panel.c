@@ -89,6 +89,8 @@ uint32_t zs_panel_window_bytes(zs_format format, unsigned w, unsigned h)
         return (uint32_t)w * ((h + 7u) / 8u);
     if (format == ZS_FMT_MONO_MSB)
         return (uint32_t)((w + 7u) / 8u) * h;
+    if (format == ZS_FMT_GRAY4)
+        return (uint32_t)((w + 1u) / 2u) * h;
     return (uint32_t)w * h * (format == ZS_FMT_RGB666 ? 3u : 2u);
 }
 
@@ -284,6 +286,9 @@ zs_panel_status zs_panel_window(zs_panel *p, uint16_t x0, uint16_t y0, uint16_t 
     if (p->format == ZS_FMT_MONO_PAGE && (y0 % 8u || (y1 % 8u && y1 != p->height)))
         return ZS_PANEL_ERR_WINDOW;
     if (p->format == ZS_FMT_MONO_MSB && (x0 % 8u || (x1 % 8u && x1 != p->width)))
+        return ZS_PANEL_ERR_WINDOW;
+    /* 4-bit RAM: a column address is a pair of pixels */
+    if (p->format == ZS_FMT_GRAY4 && (x0 % 2u || (x1 % 2u && x1 != p->width)))
         return ZS_PANEL_ERR_WINDOW;
     xs = (uint16_t)(x0 + p->x_offset);
     xe = (uint16_t)(x1 - 1u + p->x_offset);

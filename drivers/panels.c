@@ -344,11 +344,61 @@ const zs_panel_desc zs_panel_ssd1680_122x250 = {
     INIT(ssd1680_init),
 };
 
+/* SSD0323 + OSRAM Pictiva 128x64 (the Stellaris LM3S6965 board): current
+ * range, contrast, phase and row periods, clock, a linear grey-scale table,
+ * pre-charge, VCOMH and VSL levels, external VCC; each byte its own record
+ * (parameters go with D/C low). The glass shows 64 of the 80 RAM rows. */
+static const uint8_t ssd0323_init[] = {
+    ZS_SSD0323_MASTER, 0, 0x02, 0,
+    ZS_SSD0323_CURRENT_FULL, 0,
+    ZS_SSD0323_CONTRAST, 0, 0x33, 0,
+    ZS_SSD0323_PHASE, 0, 0x22, 0,
+    ZS_SSD0323_ROWPERIOD, 0, 0x46, 0,
+    ZS_SSD0323_CLOCK, 0, 0x91, 0,
+    ZS_SSD0323_GREYTABLE, 0, 0x01, 0, 0x11, 0, 0x22, 0, 0x32, 0, 0x43, 0, 0x54, 0, 0x65, 0,
+    0x76, 0,
+    ZS_SSD0323_PRECHARGE, 0, 0x10, 0,
+    ZS_SSD0323_VCOMH, 0, 0x02, 0,
+    ZS_SSD0323_VSL, 0, 0x0D, 0,
+};
+
+const zs_panel_desc zs_panel_ssd0323_128x64 = {
+    .name = "ssd0323-128x64",
+    .ops = &zs_panel_ops_ssd0323,
+    .formats = (uint16_t)(1u << ZS_FMT_GRAY4),
+    .width = 128,
+    .height = 64,
+    .ram_width = 128,
+    .ram_height = 80,
+    .max_spi_hz = 4000000u,
+    .rotations = 0x01,
+    INIT(ssd0323_init),
+};
+
+/* SSD0303 + OSRAM Pictiva 96x16 (the Stellaris LM3S811 board, I2C): the
+ * glass on SEG36..SEG131 and the first 16 COM lines, wired in sequence. */
+const zs_panel_desc zs_panel_ssd0303_96x16 = {
+    .name = "ssd0303-96x16",
+    .ops = &zs_panel_ops_ssd0303,
+    .madctl = 0x00,
+    .formats = MONO_PAGE_ONLY,
+    .width = 96,
+    .height = 16,
+    .ram_width = 132,
+    .ram_height = 16,
+    .col_offset = 36,
+    .max_spi_hz = 400000u, /* I2C fast mode */
+    .rotations = ROT_0_2,
+    .mux = 0x02,
+    INIT(oled_init),
+};
+
 static const zs_panel_desc *const all_panels[] = {
     &zs_panel_st7789_240x240, &zs_panel_st7789_240x320, &zs_panel_st7789_135x240,
     &zs_panel_ili9341,        &zs_panel_st7735_128x160, &zs_panel_gc9a01,
     &zs_panel_ili9488,        &zs_panel_ssd1351,        &zs_panel_ssd1306_128x64,
     &zs_panel_ssd1306_128x32, &zs_panel_sh1106_132x64,  &zs_panel_ssd1680_122x250,
+    &zs_panel_ssd0323_128x64, &zs_panel_ssd0303_96x16,
 };
 
 unsigned zs_panel_count(void)

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* Monochrome OLED drivers: Solomon SSD1306 and Sino Wealth SH1106, the
- * zs_panel_ops_ssd1306 and zs_panel_ops_sh1106 tables (ZS_FMT_MONO_PAGE).
+/* Monochrome OLED drivers: Solomon SSD1306, Sino Wealth SH1106 and Solomon
+ * SSD0303, the zs_panel_ops_ssd1306, _sh1106 and _ssd0303 tables
+ * (ZS_FMT_MONO_PAGE).
  *
  * Both take every byte of a command, parameters included, as a command
  * (D/C low on 4-wire SPI; control byte 0x00 on I2C), so each byte goes as a
@@ -68,7 +69,9 @@ static zs_panel_status oled_format(zs_panel *p)
 /* The datasheets' power-up order: display off, timing and multiplex, the
  * charge pump (SSD1306) or DC-DC (SH1106), addressing, orientation, COM
  * pins, contrast and pre-charge, RAM shown, inversion, display on. */
-static zs_panel_status oled_init(zs_panel *p, int sh1106)
+enum { OLED_SSD1306, OLED_SH1106, OLED_SSD0303 };
+
+static zs_panel_status oled_init(zs_panel *p, int kind)
 {
     zs_panel_status s;
     const zs_panel_desc *d = p->desc;
@@ -80,7 +83,10 @@ static zs_panel_status oled_init(zs_panel *p, int sh1106)
         (s = send2(p, ZS_SSD1306_OFFSET, 0x00)) != ZS_PANEL_OK ||
         (s = send1(p, ZS_SSD1306_STARTLINE)) != ZS_PANEL_OK)
         return s;
-    if (sh1106)
+    if (kind == OLED_SSD0303) { /* DC-DC on; monochrome, normal power */
+        if ((s = send2(p, ZS_SH1106_DCDC, 0x8B)) == ZS_PANEL_OK)
+            s = send2(p, ZS_SSD0303_COLOR_MODE, 0x00);
+    } else if (kind == OLED_SH1106)
         s = send2(p, ZS_SH1106_DCDC, 0x8B);
     else if ((s = send2(p, ZS_SSD1306_CHARGEPUMP, 0x14)) == ZS_PANEL_OK)
         s = send2(p, ZS_SSD1306_MEMMODE, 0x00); /* horizontal addressing */
@@ -100,12 +106,17 @@ static zs_panel_status oled_init(zs_panel *p, int sh1106)
 
 static zs_panel_status ssd1306_init(zs_panel *p)
 {
-    return oled_init(p, 0);
+    return oled_init(p, OLED_SSD1306);
 }
 
 static zs_panel_status sh1106_init(zs_panel *p)
 {
-    return oled_init(p, 1);
+    return oled_init(p, OLED_SH1106);
+}
+
+static zs_panel_status ssd0303_init(zs_panel *p)
+{
+    return oled_init(p, OLED_SSD0303);
 }
 
 /* Horizontal addressing: columns xs..xe, pages ys/8..ye/8 (inclusive). */
@@ -167,6 +178,21 @@ const zs_panel_ops zs_panel_ops_sh1106 = {
     .name = "SH1106",
     .check = NULL,
     .init = sh1106_init,
+    .format = oled_format,
+    .orient = oled_orient,
+    .invert = oled_invert,
+    .display = oled_display,
+    .window = sh1106_window,
+    .write_begin = sh1106_write_begin,
+    .encoder = NULL,
+    .frame_end = NULL,
+};
+
+/* The SSD0303 addresses its RAM like the SH1106 (page mode only). */
+const zs_panel_ops zs_panel_ops_ssd0303 = {
+    .name = "SSD0303",
+    .check = NULL,
+    .init = ssd0303_init,
     .format = oled_format,
     .orient = oled_orient,
     .invert = oled_invert,

@@ -23,6 +23,7 @@
 
 int sim_panel_main(int argc, char **argv);
 int sim_panel_mono(int argc, char **argv); /* panel_mono.c */
+int sim_panel_gray(int argc, char **argv); /* panel_gray.c */
 
 #define PANEL_PROG "zspan-sim panel"
 
@@ -349,6 +350,9 @@ int sim_panel_main(int argc, char **argv)
     for (i = 1; i + 1 < argc; i++)
         if (strcmp(argv[i], "--panel") == 0 && emu_mono_model_find(argv[i + 1]) != NULL)
             return sim_panel_mono(argc, argv);
+        else if (strcmp(argv[i], "--panel") == 0 &&
+                 zs_panel_supports(zs_panel_find(argv[i + 1]), ZS_FMT_GRAY4))
+            return sim_panel_gray(argc, argv); /* and the 4-bit grey ones theirs */
     rc = parse(argc, argv, &o);
     if (rc != 0 || o.app.list || o.done) {
         if (o.app.list)

@@ -141,7 +141,10 @@ int sim_panel_mono(int argc, char **argv)
     }
     fmt = zs_panel_supports(d, ZS_FMT_MONO_PAGE) ? ZS_FMT_MONO_PAGE : ZS_FMT_MONO_MSB;
     rc = SIM_EXIT_FAIL;
-    if (emu_mono_init(&emu, m) != 0 || emu_mono_port_init(&port, &emu, o.i2c, ZS_SSD1306_I2C_ADDR))
+    if (emu_mono_init(&emu, m) != 0 ||
+        emu_mono_port_init(&port, &emu, o.i2c,
+                           m->family == EMU_MONO_SSD0303 ? ZS_SSD0303_I2C_ADDR
+                                                         : ZS_SSD1306_I2C_ADDR))
         goto done;
     ps = zs_panel_init(&lcd, d, &port.bus, fmt, (unsigned)o.app.rotation);
     if (ps != ZS_PANEL_OK) {

@@ -49,16 +49,16 @@ $(I2C_TEST): $(I2C_TEST_SRCS) ports/linux/i2c_bus.c ports/linux/zs_linux_i2c.h $
 	        $(TEST_LIBS); \
 	fi
 
-# -DZS_NO_MONO leaves the 1-bit stages out of a firmware link: the core's
+# -DZS_NO_MONO leaves the 1-bit stages (and GRAY4) out of a firmware link: the core's
 # objects built that way must not refer to them.
 TEST_TARGETS += check-no-mono
 .PHONY: check-no-mono
 check-no-mono: | deps
 	@mkdir -p $(BUILD)/m0-nomono
-	@for f in $(filter-out src/mono.c src/lines.c,$(CORE_SRCS)); do \
+	@for f in $(filter-out src/mono.c src/lines.c src/gray4.c,$(CORE_SRCS)); do \
 	    $(ARM_CC) $(M0_CFLAGS) -Wconversion -DZS_NO_MONO -c $$f \
 	        -o $(BUILD)/m0-nomono/$$(basename $$f .c).o || exit 1; done; \
-	if $(ARM_NM) -u $(BUILD)/m0-nomono/*.o | grep -E 'zs_(mono|lines)_'; then \
+	if $(ARM_NM) -u $(BUILD)/m0-nomono/*.o | grep -E 'zs_(mono|lines|gray4)_'; then \
 	    echo "check-no-mono: FAIL: objects built with ZS_NO_MONO call the 1-bit stages"; exit 1; fi; \
 	echo "check-no-mono: without the 1-bit stages .text is" \
 	    $$($(ARM_SIZE) -t $(BUILD)/m0-nomono/*.o | tail -1 | cut -f1 | tr -d ' ') "bytes (Cortex-M0)"

@@ -34,6 +34,8 @@ size_t zs_format_stride(zs_format fmt, unsigned width)
         return width;
     if (fmt == ZS_FMT_MONO_MSB)
         return (width + 7u) / 8u;
+    if (fmt == ZS_FMT_GRAY4)
+        return (width + 1u) / 2u;
     return (size_t)width * zs_format_bytes(fmt);
 }
 

@@ -4,8 +4,9 @@
  * row-major MSB first. */
 #include "zs_mono.h"
 
-/* The 8x8 Bayer index matrix (recursive construction, values 0..63). */
-static const uint8_t bayer8[8][8] = {
+/* The 8x8 Bayer index matrix (recursive construction, values 0..63); the
+ * GRAY4 stage (gray4.c) dithers with it too. */
+const uint8_t zs_bayer8[8][8] = {
     {0, 32, 8, 40, 2, 34, 10, 42},  {48, 16, 56, 24, 50, 18, 58, 26},
     {12, 44, 4, 36, 14, 46, 6, 38}, {60, 28, 52, 20, 62, 30, 54, 22},
     {3, 35, 11, 43, 1, 33, 9, 41},  {51, 19, 59, 27, 49, 17, 57, 25},
@@ -27,7 +28,7 @@ void zs_mono_begin(zs_renderer *r)
  * round(64 g / 255) of every 64 pixels. */
 static void dither_bayer(uint8_t *g, int w, int y)
 {
-    const uint8_t *m = bayer8[y & 7];
+    const uint8_t *m = zs_bayer8[y & 7];
     int x;
     for (x = 0; x < w; x++)
         g[x] = (uint8_t)(128u * g[x] > 255u * (2u * m[x & 7] + 1u));

@@ -84,7 +84,7 @@ size_t zs_arena_bytes(const zs_config *cfg)
 #ifdef ZS_NO_MONO
 #define MONO_BUILT(f) ((void)(f), 0)
 #else
-#define MONO_BUILT(f) zs_format_is_mono(f)
+#define MONO_BUILT(f) (zs_format_is_mono(f) || (f) == ZS_FMT_GRAY4)
 #endif
 
 /* Takes n bytes (rounded up to 8) from the cursor. */
@@ -265,6 +265,12 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
                                       : !(r->cfg.flags & ZS_CFG_MONO))
             return ZS_ERR_MODE;
     }
+    if (p->format == ZS_FMT_GRAY4) { /* gray4.c: the grey scratch line of ZS_CFG_MONO */
+        if (p->mono & ~(unsigned)(ZS_GRAY4_DITHER | ZS_MONO_INVERT))
+            return ZS_ERR_ARGUMENT;
+        if (!(r->cfg.flags & ZS_CFG_MONO))
+            return ZS_ERR_MODE;
+    }
     if (p->light_count > ZS_MAX_LIGHTS || p->ambient < 0 ||
         (p->fog.enabled && p->fog.end <= p->fog.start) || p->background > 0xFFFFFFu ||
         p->fog.color > 0xFFFFFFu)
@@ -288,8 +294,11 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
     r->priv.out_format = (uint8_t)p->format;
     if (zs_format_is_mono(p->format)) /* the stages render a scratch line */
         r->shade.format = (p->mono & ZS_MONO_LINES) ? ZS_FMT_ID16 : ZS_FMT_GRAY8;
+    else if (p->format == ZS_FMT_GRAY4)
+        r->shade.format = ZS_FMT_GRAY8;
     r->priv.bpp = (uint8_t)zs_format_bytes(r->shade.format);
-    r->priv.rows_kind = zs_format_is_mono(p->format)           ? ZS_ROWS_MONO
+    r->priv.rows_kind = (zs_format_is_mono(p->format) || p->format == ZS_FMT_GRAY4)
+                            ? ZS_ROWS_MONO /* a scratch line, then packed */
                         : r->priv.mode == ZS_MODE_WARNOCK ? ZS_ROWS_AREA
                                                           : ZS_ROWS_BYTES;
     return ZS_OK;
@@ -306,7 +315,7 @@ static void visible_row(zs_renderer *r, int y, uint8_t *row)
 }
 #endif
 
-/* One row of a 1-bit frame: the scratch line, then dithered and packed. */
+/* One row of a 1-bit (or GRAY4) frame: the scratch line, then dithered and packed. */
 static void mono_row(zs_renderer *r, int y, uint8_t *out)
 {
 #ifdef ZS_NO_MONO
@@ -315,6 +324,13 @@ static void mono_row(zs_renderer *r, int y, uint8_t *out)
     (void)out;
 #else
     uint8_t *grey = r->priv.mono_grey;
+    if (r->priv.out_format == ZS_FMT_GRAY4) {
+        visible_row(r, y, grey);
+        if (r->priv.aa_mode)
+            zs_abuffer_row(r, y, grey);
+        zs_gray4_row(r, y, grey, out);
+        return;
+    }
     if (r->shade.mono & ZS_MONO_LINES) {
         visible_row(r, y, (uint8_t *)r->priv.line_ids[0]);
         zs_lines_row(r, y, grey);

@@ -6,6 +6,8 @@
 
 #include "zs_internal.h"
 
+/* mono.c: the 8x8 Bayer index matrix (values 0..63). */
+extern const uint8_t zs_bayer8[8][8];
 /* mono.c: clears the diffusion error (first row of a frame). */
 void zs_mono_begin(zs_renderer *r);
 /* Dithers row y (g: GRAY8, or 0/1 line flags with ZS_MONO_LINES; g is
@@ -18,5 +20,9 @@ void zs_lines_begin(zs_renderer *r);
 /* Edge flags (0/1) of the row just rendered into line_ids[0], from it and
  * the row above (when line_prev_row); then the two id lines swap. */
 void zs_lines_row(zs_renderer *r, int y, uint8_t *flags);
+
+/* gray4.c: row y (g: GRAY8, overwritten or not) packed into out as
+ * ZS_FMT_GRAY4, rounded or dithered (ZS_GRAY4_DITHER), inverted if asked. */
+void zs_gray4_row(const zs_renderer *r, int y, const uint8_t *g, uint8_t *out);
 
 #endif

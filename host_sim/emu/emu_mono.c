@@ -19,6 +19,10 @@ static const emu_mono_model models[] = {
     {"sh1106-132x64", EMU_MONO_SH1106, 132, 64, 128, 64, 2, 1, 1, 1, 0},
     /* 2.13" e-paper: 176 x 296 RAM, glass on sources 0..121, gates 0..249 */
     {"ssd1680-122x250", EMU_MONO_SSD1680, 176, 296, 122, 250, 0, 0, 0, 0, 4000},
+    /* OSRAM Pictiva 96x16 (Stellaris LM3S811 board): 132 SEG lines, the glass
+     * on SEG36..SEG131 left to right and COM0..COM15 top down, in sequence
+     * (last: the fuzz corpus picks models by index) */
+    {"ssd0303-96x16", EMU_MONO_SSD0303, 132, 64, 96, 16, 36, 0, 0, 0, 0},
 };
 
 unsigned emu_mono_model_count(void)
@@ -118,7 +122,7 @@ int emu_mono_init(emu_mono *e, const emu_mono_model *m)
     }
     for (i = 0; i < (size_t)m->vis_w * m->vis_h; i++)
         e->glass[i] = (uint8_t)((i / 7) & 1u);
-    e->i2c_addr = 0x3C;
+    e->i2c_addr = m->family == EMU_MONO_SSD0303 ? 0x3D : 0x3C; /* SA0 high on the LM3S811 board */
     power_on_state(e);
     return 0;
 }
@@ -162,7 +166,10 @@ static int ready(emu_mono *e, uint8_t b)
 /* Parameter count of an OLED command byte; -1 if it is none. */
 static int oled_params(const emu_mono *e, uint8_t c)
 {
-    int sh = e->m->family == EMU_MONO_SH1106;
+    /* the SSD0303 has the SH1106's page-only command set, and 0xD8 */
+    int sh = e->m->family == EMU_MONO_SH1106 || e->m->family == EMU_MONO_SSD0303;
+    if (c == 0xD8)
+        return e->m->family == EMU_MONO_SSD0303 ? 1 : -1;
     if (c <= 0x1F || (c >= 0x40 && c <= 0x7F) || (c >= 0xB0 && c <= 0xB7))
         return 0;
     switch (c) {
@@ -430,7 +437,9 @@ void emu_mono_command(emu_mono *e, uint8_t b)
     n = oled_params(e, b);
     if (n < 0) {
         flag(e, EMU_M_COMMAND, "0x%02X is no %s command", b,
-             e->m->family == EMU_MONO_SH1106 ? "SH1106" : "SSD1306");
+             e->m->family == EMU_MONO_SH1106    ? "SH1106"
+             : e->m->family == EMU_MONO_SSD0303 ? "SSD0303"
+                                                : "SSD1306");
         return;
     }
     if (n == 0) {

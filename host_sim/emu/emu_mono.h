@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Emulated monochrome controllers: SSD1306 and SH1106 OLEDs (1-bit pages),
+ * Emulated monochrome controllers: SSD1306, SH1106 and SSD0303 OLEDs (1-bit pages),
  * SSD1680 e-paper (1-bit rows, two RAMs, refresh sequences). Fed with the
  * real byte stream: D/C-low and D/C-high bytes of 4-wire SPI, or I2C write
  * transactions (address, control bytes Co/D#C). They keep their own RAM,
@@ -19,7 +19,7 @@
 
 #include "zspan/bus.h"
 
-enum { EMU_MONO_SSD1306 = 0, EMU_MONO_SH1106 = 1, EMU_MONO_SSD1680 = 2 };
+enum { EMU_MONO_SSD1306 = 0, EMU_MONO_SH1106 = 1, EMU_MONO_SSD1680 = 2, EMU_MONO_SSD0303 = 3 };
 
 /* Protocol error flags (emu_mono.errors). */
 enum {
@@ -107,6 +107,10 @@ typedef struct emu_mono_port {
     uint32_t max_frame;        /* I2C data bytes per transaction (0: 4096) */
     uint64_t clocks;           /* wire clocks so far */
     uint32_t frames;           /* I2C transactions */
+    uint8_t co_each;           /* I2C: each command byte as 0x80 + byte (Co = 1), as
+                                  the Stellaris port frames them (issue 20) */
+    uint32_t stream;           /* I2C: FNV-1a 32 over every transaction's address
+                                  byte (addr << 1) and bytes (from 0x811C9DC5) */
 } emu_mono_port;
 
 int emu_mono_port_init(emu_mono_port *p, emu_mono *e, int i2c, uint8_t addr);

@@ -7,9 +7,34 @@
 
 /* ---- the bus port ---- */
 
+/* One I2C write transaction, hashed into the port's stream. */
+static int i2c_write(emu_mono_port *p, const uint8_t *frame, size_t n)
+{
+    size_t i;
+    p->stream = (p->stream ^ (uint8_t)(p->addr << 1)) * 0x01000193u;
+    for (i = 0; i < n; i++)
+        p->stream = (p->stream ^ frame[i]) * 0x01000193u;
+    return emu_mono_i2c_write(p->emu, p->addr, frame, n);
+}
+
 static int port_command(void *user, uint8_t cmd, const uint8_t *params, size_t n)
 {
     emu_mono_port *p = user;
+    if (p->i2c && p->co_each) { /* 0x80 before every byte */
+        uint8_t frame[2 * (1 + 64)];
+        size_t i;
+        if (n > 64)
+            return -1;
+        frame[0] = 0x80;
+        frame[1] = cmd;
+        for (i = 0; i < n; i++) {
+            frame[2 + 2 * i] = 0x80;
+            frame[3 + 2 * i] = params[i];
+        }
+        p->clocks += 9u * (1u + 2u * (1u + n)) + 2u;
+        p->frames++;
+        return i2c_write(p, frame, 2u * (1u + n)) == 0 ? 0 : -1;
+    }
     if (p->i2c) {
         uint8_t frame[1 + 1 + 64];
         if (n > 64)
@@ -20,7 +45,7 @@ static int port_command(void *user, uint8_t cmd, const uint8_t *params, size_t n
             memcpy(frame + 2, params, n);
         p->clocks += 9u * (1u + 2u + n) + 2u;
         p->frames++;
-        return emu_mono_i2c_write(p->emu, p->addr, frame, n + 2) == 0 ? 0 : -1;
+        return i2c_write(p, frame, n + 2) == 0 ? 0 : -1;
     }
     emu_mono_command(p->emu, cmd);
     emu_mono_data(p->emu, params, n);
@@ -40,7 +65,7 @@ static int port_pixels(void *user, const uint8_t *data, size_t n)
             memcpy(frame + 1, data, k);
             p->clocks += 9u * (1u + 1u + k) + 2u;
             p->frames++;
-            if (emu_mono_i2c_write(p->emu, p->addr, frame, k + 1) != 0)
+            if (i2c_write(p, frame, k + 1) != 0)
                 return -1;
             data += k;
             n -= k;
@@ -79,6 +104,7 @@ int emu_mono_port_init(emu_mono_port *p, emu_mono *e, int i2c, uint8_t addr)
     p->emu = e;
     p->i2c = i2c;
     p->addr = addr;
+    p->stream = 0x811C9DC5u;
     return zs_bus_init(&p->bus, &port_ops, p, 0, 0) == ZS_BUS_OK ? 0 : -1;
 }
 

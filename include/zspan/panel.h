@@ -130,6 +130,39 @@ extern "C" {
 #define ZS_SH1106_DCDC 0xADu          /* 1 param: 0x8B on */
 #define ZS_SSD1306_I2C_ADDR 0x3Cu     /* 7-bit address with SA0 low (0x3D high) */
 
+/* SSD0323 (128x80 RAM of 4-bit grey, ZS_FMT_GRAY4; issue 20). Over 4-wire SPI
+ * parameters go with D/C low like their command; RAM data with D/C high. */
+#define ZS_SSD0323_SETCOLUMN 0x15u    /* 2 params: start, end column pair (0..63) */
+#define ZS_SSD0323_SETROW 0x75u       /* 2 params: start, end row (0..79) */
+#define ZS_SSD0323_CONTRAST 0x81u     /* 1 param */
+#define ZS_SSD0323_CURRENT_FULL 0x86u /* full current range (0x84 quarter, 0x85 half) */
+#define ZS_SSD0323_REMAP 0xA0u        /* 1 param: ZS_SSD0323_RM_* */
+#define ZS_SSD0323_STARTLINE 0xA1u    /* 1 param: RAM row shown first */
+#define ZS_SSD0323_OFFSET 0xA2u       /* 1 param: vertical offset of the COM lines */
+#define ZS_SSD0323_NORMAL 0xA4u       /* the RAM as it is (0xA5 all on, 0xA6 all off) */
+#define ZS_SSD0323_INVERSE 0xA7u
+#define ZS_SSD0323_MUX 0xA8u          /* 1 param: rows - 1 (15..79) */
+#define ZS_SSD0323_MASTER 0xADu       /* 1 param: 0x02 external VCC */
+#define ZS_SSD0323_DISPOFF 0xAEu
+#define ZS_SSD0323_DISPON 0xAFu
+#define ZS_SSD0323_PHASE 0xB1u        /* 1 param: phase 1 and 2 lengths */
+#define ZS_SSD0323_ROWPERIOD 0xB2u    /* 1 param */
+#define ZS_SSD0323_CLOCK 0xB3u        /* 1 param: divider and oscillator */
+#define ZS_SSD0323_GREYTABLE 0xB8u    /* 8 params: the grey-scale pulse widths */
+#define ZS_SSD0323_PRECHARGE 0xBCu    /* 1 param */
+#define ZS_SSD0323_VCOMH 0xBEu        /* 1 param */
+#define ZS_SSD0323_VSL 0xBFu          /* 1 param */
+#define ZS_SSD0323_RM_COLUMN 0x01u    /* column address 0 -> SEG127 */
+#define ZS_SSD0323_RM_NIBBLE 0x02u    /* nibble re-map: the high nibble is the left pixel */
+#define ZS_SSD0323_RM_VERTICAL 0x04u  /* vertical address increment */
+#define ZS_SSD0323_RM_COM 0x10u       /* scan COM79 -> COM0 */
+#define ZS_SSD0323_RM_COMSPLIT 0x40u  /* odd/even COM split */
+
+/* SSD0303 (132x64 RAM, 1-bit pages, page addressing only): the SH1106's
+ * command set plus 0xD8; its 96x16 glass on the Stellaris LM3S811 board. */
+#define ZS_SSD0303_COLOR_MODE 0xD8u   /* 1 param: 0x00 monochrome, normal power */
+#define ZS_SSD0303_I2C_ADDR 0x3Du     /* 7-bit address with SA0 high (0x3C low) */
+
 /* SSD1680 (e-paper, 1-bit RAM, row-major MSB first, bit 1 = white). */
 #define ZS_SSD1680_DRIVER_OUTPUT 0x01u /* 3 params: gates - 1 (low, high), scan */
 #define ZS_SSD1680_DEEP_SLEEP 0x10u    /* 1 param */
@@ -244,6 +277,15 @@ extern const zs_panel_ops zs_panel_ops_ssd1351;
  * so rotations 0 and 2 (a byte is 8 pixels of a column: no exchange). */
 extern const zs_panel_ops zs_panel_ops_ssd1306;
 extern const zs_panel_ops zs_panel_ops_sh1106;
+/* Solomon SSD0303 (issue 20): the SH1106's page addressing (the page and
+ * column before each page of the window), the DC-DC converter and 0xD8's
+ * monochrome mode; over I2C a port frames each command byte as 0x80 + byte
+ * (Co = 1) and pixel data as 0x40 + bytes. Rotations 0 and 2. */
+extern const zs_panel_ops zs_panel_ops_ssd0303;
+/* Solomon SSD0323 (issue 20): ZS_FMT_GRAY4 in horizontal addressing, one
+ * window whose columns are pairs of pixels (x0 even, x1 even or the width).
+ * Rotation 0 only. */
+extern const zs_panel_ops zs_panel_ops_ssd0323;
 /* Solomon SSD1680 e-paper: ZS_FMT_MONO_MSB into the black/white RAM, then a
  * full refresh (or a partial one: see zs_panel.partial) with the BUSY wait
  * as a delay. Rotation 0 only. */
@@ -297,6 +339,8 @@ extern const zs_panel_desc zs_panel_ssd1306_128x64; /* 0.96" OLED, I2C or SPI */
 extern const zs_panel_desc zs_panel_ssd1306_128x32; /* 0.91" OLED */
 extern const zs_panel_desc zs_panel_sh1106_132x64;  /* 1.3" OLED, 132-column RAM */
 extern const zs_panel_desc zs_panel_ssd1680_122x250; /* 2.13" e-paper */
+extern const zs_panel_desc zs_panel_ssd0323_128x64;  /* OSRAM Pictiva 128x64, 16 greys */
+extern const zs_panel_desc zs_panel_ssd0303_96x16;   /* OSRAM Pictiva 96x16, 1 bit, I2C */
 
 /* Number of built-in tables, the i-th one (NULL past the end), and lookup by
  * name (exact, NULL if unknown). */
@@ -353,7 +397,8 @@ unsigned zs_panel_bytes_per_pixel(const zs_panel_desc *desc, zs_format format);
 /* Does the panel take `format` (any kind)? */
 int zs_panel_supports(const zs_panel_desc *desc, zs_format format);
 /* Bytes a w x h window takes in `format`: w * h * bytes per pixel, w per
- * page of 8 rows (ZS_FMT_MONO_PAGE), (w + 7) / 8 per row (ZS_FMT_MONO_MSB). */
+ * page of 8 rows (ZS_FMT_MONO_PAGE), (w + 7) / 8 per row (ZS_FMT_MONO_MSB),
+ * (w + 1) / 2 per row (ZS_FMT_GRAY4). */
 uint32_t zs_panel_window_bytes(zs_format format, unsigned w, unsigned h);
 
 /* MADCTL (DCS) for a rotation, with the module's mirror and BGR bits. */
@@ -378,7 +423,8 @@ zs_panel_status zs_panel_backlight(zs_panel *p, uint8_t level);
  * starts a memory write (DCS: CASET, RASET, RAMWR; SSD1351: 0x15, 0x75, 0x5C).
  * Pixels then go row by row, left to right, top to bottom (ZS_FMT_MONO_PAGE:
  * page by page, y0 and y1 multiples of 8 or y1 the height; ZS_FMT_MONO_MSB:
- * x0 and x1 multiples of 8 or x1 the width; else ZS_PANEL_ERR_WINDOW). */
+ * x0 and x1 multiples of 8 or x1 the width; ZS_FMT_GRAY4: x0 and x1 even or
+ * x1 the width; else ZS_PANEL_ERR_WINDOW). */
 zs_panel_status zs_panel_window(zs_panel *p, uint16_t x0, uint16_t y0, uint16_t x1, uint16_t y1);
 
 /* Sends n pixel bytes (p->format) of the open window (any chunking, not

@@ -147,8 +147,9 @@ const char *zs_strerror(zs_status status);
 #define ZS_CFG_FLAT_ONLY 0x02u   /* no per-vertex colour or fog: ZS_SHADE_GOURAUD
                                     and fog are refused (flat and lit faces work) */
 /* Features a build adds (they cost arena only when asked for): */
-#define ZS_CFG_MONO 0x04u        /* 1-bit output (ZS_FMT_MONO_*): a grey scratch line
-                                    and one line of diffusion error, 3 B per column */
+#define ZS_CFG_MONO 0x04u        /* 1-bit output (ZS_FMT_MONO_*) and ZS_FMT_GRAY4: a
+                                    grey scratch line and one line of diffusion
+                                    error, 3 B per column */
 #define ZS_CFG_LINES 0x08u       /* hidden-line drawing (ZS_MONO_LINES): two lines of
                                     triangle ids and a flag line (5 B per column,
                                     1 B shared with ZS_CFG_MONO) and a normal and
@@ -409,16 +410,25 @@ typedef enum zs_format {
                               y0 / 8 at buf, the next at buf + stride (>= width);
                               a row sets its bit and keeps the other 7 (the
                               screen's last row clears the bits below it). */
-    ZS_FMT_MONO_MSB = 9    /* row-major (e-paper): row k at buf + k * stride
+    ZS_FMT_MONO_MSB = 9,   /* row-major (e-paper): row k at buf + k * stride
                               (>= (width + 7) / 8), pixel x in byte x / 8, bit
                               7 - x % 8; the unused low bits of the last byte 0 */
+    /* 4-bit grey (SSD0323 OLEDs; issue 20): needs ZS_CFG_MONO (its grey scratch
+     * line). Level round(15 g / 255) of the GRAY8 luma g, or ordered dithered
+     * between levels (ZS_GRAY4_DITHER); 15 - level with ZS_MONO_INVERT. */
+    ZS_FMT_GRAY4 = 10      /* row k at buf + k * stride (>= (width + 1) / 2):
+                              pixel x in byte x / 2, the high nibble for even x
+                              (two pixels a byte, high nibble first); an odd
+                              width's last low nibble is 0 */
 } zs_format;
 
-/* Bytes per pixel of a byte format (0 for the 1-bit formats and unknown ones). */
+/* Bytes per pixel of a byte format (0 for the 1-bit formats, ZS_FMT_GRAY4 and
+ * unknown ones). */
 unsigned zs_format_bytes(zs_format fmt);
 /* The smallest stride zs_render_rows accepts for a format and width: width *
  * bytes per pixel, width for ZS_FMT_MONO_PAGE (one byte per column of a
- * page), (width + 7) / 8 for ZS_FMT_MONO_MSB; 0 for an unknown format. */
+ * page), (width + 7) / 8 for ZS_FMT_MONO_MSB, (width + 1) / 2 for
+ * ZS_FMT_GRAY4; 0 for an unknown format. */
 size_t zs_format_stride(zs_format fmt, unsigned width);
 /* Is fmt one of the 1-bit formats? */
 int zs_format_is_mono(zs_format fmt);
@@ -433,6 +443,10 @@ int zs_format_is_mono(zs_format fmt);
                                   visible silhouettes, creases and boundaries
                                   between draw calls, one pixel wide */
 #define ZS_MONO_INVERT 0x04u   /* every output bit inverted (dark lines on light) */
+/* zs_shade_params.mono for ZS_FMT_GRAY4: ZS_MONO_INVERT and this one. */
+#define ZS_GRAY4_DITHER 0x08u  /* ordered dithering between the 16 levels (the
+                                  8x8 Bayer matrix of the 1-bit formats): a flat
+                                  grey g averages 15 g / 255 within 1/64 level */
 
 #define ZS_MAX_LIGHTS 2
 
@@ -640,8 +654,9 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
 zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mode);
 /* Shading for the frame; call after zs_frame_begin and before the first
  * zs_draw (zs_frame_begin resets it to zs_shade_default()). The 1-bit
- * formats need ZS_CFG_MONO (ZS_MONO_LINES: ZS_CFG_LINES), else ZS_ERR_MODE;
- * unknown ZS_MONO_* bits or crease_deg >= 180 give ZS_ERR_ARGUMENT (mono and
+ * formats and ZS_FMT_GRAY4 need ZS_CFG_MONO (ZS_MONO_LINES: ZS_CFG_LINES), else
+ * ZS_ERR_MODE; unknown ZS_MONO_* bits (GRAY4: other than ZS_GRAY4_DITHER and
+ * ZS_MONO_INVERT) or crease_deg >= 180 give ZS_ERR_ARGUMENT (mono and
  * crease_deg are ignored with a byte format). */
 zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *params);
 

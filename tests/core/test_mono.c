@@ -394,7 +394,7 @@ static void test_api(void **state)
     sp.format = (zs_format)7;
     sp.mono = 0;
     ZT_ST(begin(&mono, &cam, ZS_MODE_SPAN, &sp, NULL), ZS_ERR_FORMAT);
-    sp.format = (zs_format)10;
+    sp.format = (zs_format)11; /* 10 is ZS_FMT_GRAY4 */
     ZT_ST(begin(&mono, &cam, ZS_MODE_SPAN, &sp, NULL), ZS_ERR_FORMAT);
     sp.format = ZS_FMT_GRAY8;
     sp.mono = 0xFF; /* ignored with a byte format */

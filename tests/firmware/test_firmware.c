@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * Firmware test: frame 0 of the sphere285 benchmark scene, both visibility
- * modes and the three 1-bit outputs (ordered dither, error diffusion, hidden
- * lines: bench_mono_frame), on the Cortex-M4 (QEMU mps2-an386) and Cortex-M0
+ * modes, the three 1-bit outputs (ordered dither, error diffusion, hidden
+ * lines) and GRAY4 rounded and dithered (bench_mono_frame), on the Cortex-M4 (QEMU mps2-an386) and Cortex-M0
  * (QEMU microbit, 16 KB RAM) images; the frame checksums must equal the
  * host's. Also checks
  * the SysTick calibration under -icount shift=0 and that no pool overflowed.
@@ -92,12 +92,13 @@ static int find_sum(const char *text, const char *board, const char *mode, unsig
     return 1;
 }
 
-/* span, zline, the 1-bit outputs of bench_mono_frame, the textured frames
- * of bench_tex_frame */
-#define N_OUTPUTS 11
+/* span, zline, the 1-bit and GRAY4 outputs of bench_mono_frame, the
+ * textured frames of bench_tex_frame */
+#define N_OUTPUTS 13
 static const char *const outputs[N_OUTPUTS] = {
-    "span", "zline", "mono-bayer", "mono-diffuse", "mono-lines", "tex-plain", "tex-nearest",
-    "tex-nearest-zline", "tex-subdiv", "tex-bilinear", "tex-lit-fog"};
+    "span", "zline", "mono-bayer", "mono-diffuse", "mono-lines", "gray4", "gray4-dither",
+    "tex-plain", "tex-nearest", "tex-nearest-zline", "tex-subdiv", "tex-bilinear", "tex-lit-fog"};
+#define TEX_FIRST 7 /* outputs[TEX_FIRST] is "tex-plain" */
 static unsigned long host_sum[N_OUTPUTS];
 
 static int host_setup(void **state)
@@ -119,9 +120,10 @@ static int host_setup(void **state)
             }
     }
     /* the textured frame is the same in both modes, and textured at all */
-    if (host_sum[6] != host_sum[7] || host_sum[5] == host_sum[6]) {
+    if (host_sum[TEX_FIRST + 1] != host_sum[TEX_FIRST + 2] ||
+        host_sum[TEX_FIRST] == host_sum[TEX_FIRST + 1]) {
         fprintf(stderr, "host textured checksums: plain %08lx nearest %08lx zline %08lx\n",
-                host_sum[5], host_sum[6], host_sum[7]);
+                host_sum[TEX_FIRST], host_sum[TEX_FIRST + 1], host_sum[TEX_FIRST + 2]);
         return -1;
     }
     return 0;

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * fuzz_mono: the emulated monochrome controllers (host_sim/emu/emu_mono.c:
- * SSD1306, SH1106, SSD1680) decoding arbitrary wire streams (libFuzzer).
+ * SSD1306, SH1106, SSD1680, SSD0303) decoding arbitrary wire streams (libFuzzer).
  *
  * Input: byte 0 picks the model; the rest is a program of operations: a
  * command byte (D/C low), a run of data bytes (D/C high), an I2C write
@@ -111,13 +111,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
         case 4: { /* I2C transaction (the same on both: its boundaries count) */
             size_t n = fz_u8(&d) % 48u, i;
-            uint8_t addr = (uint8_t)((fz_u8(&d) & 1u) ? 0x3C : fz_u8(&d) & 0x7Fu);
+            uint8_t addr = (uint8_t)((fz_u8(&d) & 1u) ? a.i2c_addr : fz_u8(&d) & 0x7Fu);
             for (i = 0; i < n; i++)
                 run[i] = fz_u8(&d);
             int ra = emu_mono_i2c_write(&a, addr, run, n);
             int rb = emu_mono_i2c_write(&b, addr, run, n);
             FZ_CHECK(ra == rb && (ra == 0 || ra == -1), "i2c results %d, %d", ra, rb);
-            FZ_CHECK(ra == -1 || (addr == 0x3C && m->family != EMU_MONO_SSD1680),
+            /* 0x3C, the SSD0303's 0x3D (SA0 high on its board) */
+            FZ_CHECK(ra == -1 || (addr == (m->family == EMU_MONO_SSD0303 ? 0x3D : 0x3C) &&
+                                  m->family != EMU_MONO_SSD1680),
                      "acknowledged address 0x%02X", addr);
             fed += n;
             break;

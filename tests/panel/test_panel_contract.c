@@ -826,7 +826,8 @@ static void test_incomplete_tables_refused(void **state)
         assert_non_null(o);
         assert_true(o == &zs_panel_ops_dcs || o == &zs_panel_ops_ssd1351 ||
                     o == &zs_panel_ops_ssd1306 || o == &zs_panel_ops_sh1106 ||
-                    o == &zs_panel_ops_ssd1680);
+                    o == &zs_panel_ops_ssd1680 || o == &zs_panel_ops_ssd0303 ||
+                    o == &zs_panel_ops_ssd0323);
         assert_non_null(o->name);
         assert_non_null(o->init);
         assert_non_null(o->format);

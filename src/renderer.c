@@ -139,8 +139,11 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
             r->priv.mono_grey = carve(&cur, cfg->width);
         r->priv.line_ids[0] = carve(&cur, (size_t)cfg->width * 2u);
         r->priv.line_ids[1] = carve(&cur, (size_t)cfg->width * 2u);
+        r->priv.line_pending = carve(&cur, cfg->width);
         r->priv.tri_normal = carve(&cur, (size_t)cfg->max_triangles * ZS_TRI_NORMAL_BYTES);
         r->priv.draw_starts = carve(&cur, ((size_t)cfg->max_triangles + 7u) / 8u);
+        r->priv.line_next_rec = carve(&cur, (size_t)cfg->max_triangles * 6u);
+        r->priv.line_vert_head = carve(&cur, (size_t)cfg->max_vertices * 2u);
     }
     /* the widest guard band whose projected 28.4 coordinates fit int16 */
     dim = cfg->width > cfg->height ? cfg->width : cfg->height;
@@ -202,6 +205,8 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
     r->priv.n_tris = 0;
     r->priv.tag_counter = 0;
     r->priv.next_row = 0;
+    r->priv.line_next = 0;
+    r->priv.line_keep = 0;
     memset(r->priv.buckets, 0xFF, (size_t)r->cfg.height * 2u);
     if (r->priv.draw_starts)
         memset(r->priv.draw_starts, 0, ((size_t)r->cfg.max_triangles + 7u) / 8u);
@@ -252,6 +257,7 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
         r->priv.light_dir[i] = dirs[i];
     r->shade = *p;
     r->priv.out_format = (uint8_t)p->format;
+    r->priv.line_keep = (uint8_t)(zs_format_is_mono(p->format) && (p->mono & ZS_MONO_LINES));
     if (zs_format_is_mono(p->format)) /* the stages render a scratch line */
         r->shade.format = (p->mono & ZS_MONO_LINES) ? ZS_FMT_ID16 : ZS_FMT_GRAY8;
     r->priv.bpp = (uint8_t)zs_format_bytes(r->shade.format);
@@ -268,8 +274,7 @@ static void mono_row(zs_renderer *r, int y, uint8_t *out)
 #else
     uint8_t *grey = r->priv.mono_grey;
     if (r->shade.mono & ZS_MONO_LINES) {
-        zs_raster_row(r, y, (uint8_t *)r->priv.line_ids[0]);
-        zs_lines_row(r, y, grey);
+        zs_lines_row(r, y, grey); /* renders the rows it needs */
     } else {
         zs_raster_row(r, y, grey);
     }
@@ -315,10 +320,9 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
 #endif
         r->priv.state = ZS_STATE_RENDERING;
     }
-    for (y = r->priv.next_row; y < y0; y++) {
-        zs_raster_row(r, y, 0);
-        r->priv.line_prev_row = 0; /* no ids of the row above */
-    }
+    for (y = r->priv.next_row; y < y0; y++)
+        if (y >= r->priv.line_next) /* hidden lines render a row ahead */
+            zs_raster_row(r, y, 0);
     for (y = y0; y < y0 + rows; y++) {
         if (!mono)
             zs_raster_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);

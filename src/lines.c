@@ -321,12 +321,47 @@ static int meet_smoothly(const zs_renderer *r, uint16_t i, uint16_t j, const ste
 
 /* The walk's steps at most: a pixel's width holds a few triangles. */
 #define WALK_STEPS 16
-#ifdef ZS_LINES_DEBUG
-int zs_lines_dbg_x = -1, zs_lines_dbg_y = -1, zs_lines_dbg_on;
-#define DBG(...) do { if (zs_lines_dbg_on) fprintf(stderr, __VA_ARGS__); } while (0)
-#else
-#define DBG(...) ((void)0)
-#endif
+
+static int has_vertex(const zs_tri *t, uint16_t v)
+{
+    return t->v[0] == v || t->v[1] == v || t->v[2] == v;
+}
+
+/* The end of edge k of record t that lies on the segment, or -1. */
+static int vertex_on(const zs_renderer *r, const zs_tri *t, int k, const step_pair *s)
+{
+    int e;
+    for (e = 0; e < 2; e++) {
+        uint16_t v = t->v[(k + e) % 3];
+        const zs_vert *p = &r->priv.verts[v];
+        if (s->sy == 0 ? p->y == s->py && p->x >= s->px && p->x <= s->px + s->sx
+                       : p->x == s->px && p->y >= s->py && p->y <= s->py + s->sy)
+            return v;
+    }
+    return -1;
+}
+
+/* Around vertex v (on the segment) from record i to a record tagged b,
+ * one way round (dir 0: across the edge that starts at v; 1: that ends
+ * there): smooth if every edge crossed is. An open fan (a silhouette or
+ * boundary through v) is not. */
+static int smooth_fan(const zs_renderer *r, uint16_t i, uint16_t v, uint16_t b, int dir)
+{
+    const zs_tri *t = r->priv.tris;
+    const int16_t *nrm = r->priv.tri_normal;
+    int steps;
+    for (steps = 0; steps < WALK_STEPS; steps++) {
+        int c = t[i].v[0] == v ? 0 : t[i].v[1] == v ? 1 : 2;
+        uint16_t j = neighbour(r, i, dir ? (c + 2) % 3 : c);
+        if (j == NO_RECORD || dot_q28(&nrm[4u * i], &nrm[4u * j]) < r->priv.crease_cos)
+            return 0;
+        if (t[j].color == b)
+            return 1;
+        i = j;
+    }
+    return 0;
+}
+
 
 /* Is the way from a (at c0, cover ca) to b (at c1, cover cb) smooth? The
  * walk leaves a's record by the edge its cover ends at, and crosses
@@ -343,21 +378,23 @@ static int smooth_walk(const zs_renderer *r, uint16_t b, const cover *ca, uint16
     uint16_t n = r->priv.n_tris, i = ca->rec_hi, j;
     int32_t pos = ca->hi, lo, hi;
     int k = ca->edge_hi, steps, kl, kh;
-    DBG("walk to %u from rec %u (tag %u) pos %d edge %d; b from %d\n", b, i, t[i].color, pos, k, cb->lo);
     for (steps = 0; steps < WALK_STEPS; steps++) {
         if (k < 0) /* this record reaches c1, where b is in front */
             return 0;
         j = neighbour(r, i, k);
-        DBG("  step: neighbour %u (tag %u) dot %.3f\n", j, j == NO_RECORD ? 0 : t[j].color,
-            j == NO_RECORD ? 0 : dot_q28(&nrm[4u * i], &nrm[4u * j]) / 268435456.0);
         if (j == NO_RECORD)
             break;
         if (dot_q28(&nrm[4u * i], &nrm[4u * j]) < r->priv.crease_cos)
             return 0; /* a crease */
         if (t[j].color == b)
             return 1;
-        if (!cover_span(r, &t[j], s, &lo, &hi, &kl, &kh) || hi <= pos)
+        if (!cover_span(r, &t[j], s, &lo, &hi, &kl, &kh) || hi <= pos) {
+            /* no way on across j: the segment meets a vertex of edge k */
+            int v = vertex_on(r, &t[i], k, s);
+            if (v >= 0 && has_vertex(&t[fb], (uint16_t)v))
+                return smooth_fan(r, i, (uint16_t)v, b, 0) && smooth_fan(r, i, (uint16_t)v, b, 1);
             break;
+        }
         i = j;
         pos = hi;
         k = kh;
@@ -381,11 +418,6 @@ static int pair_edge(const zs_renderer *r, uint16_t a, uint16_t b, const step_pa
     int walk = 0;
     if (a == b)
         return 0;
-#ifdef ZS_LINES_DEBUG
-    zs_lines_dbg_on = (s->px / 16 == zs_lines_dbg_x && s->py / 16 == zs_lines_dbg_y) ||
-                      ((s->px + s->sx) / 16 == zs_lines_dbg_x && (s->py + s->sy) / 16 == zs_lines_dbg_y);
-    DBG("pair %u %u at (%d,%d)+(%d,%d)\n", a, b, s->px, s->py, s->sx, s->sy);
-#endif
     ca.hi = 0;
     cb.lo = STEP_ONE;
     if (a) {
@@ -399,16 +431,6 @@ static int pair_edge(const zs_renderer *r, uint16_t a, uint16_t b, const step_pa
         if (!tag_cover(r, fb, b, s, &cb))
             cb.lo = STEP_ONE;
     }
-#ifdef ZS_LINES_DEBUG
-    if (zs_lines_dbg_on && a && b) {
-        const zs_vert *V = r->priv.verts;
-        const zs_tri *A = &r->priv.tris[fa], *B = &r->priv.tris[fb];
-        DBG("  a cover %d..%d  b cover %d..%d; a (%d %d %u) (%d %d %u) (%d %d %u) b (%d %d %u) (%d %d %u) (%d %d %u)\n",
-            walk ? ca.lo : -1, ca.hi, cb.lo, cb.hi,
-            V[A->v[0]].x, V[A->v[0]].y, V[A->v[0]].z, V[A->v[1]].x, V[A->v[1]].y, V[A->v[1]].z, V[A->v[2]].x, V[A->v[2]].y, V[A->v[2]].z,
-            V[B->v[0]].x, V[B->v[0]].y, V[B->v[0]].z, V[B->v[1]].x, V[B->v[1]].y, V[B->v[1]].z, V[B->v[2]].x, V[B->v[2]].y, V[B->v[2]].z);
-    }
-#endif
     ta = ca.hi; /* where a's cover ends */
     tb = cb.lo; /* where b's begins */
     if (walk && b && smooth_walk(r, b, &ca, fb, &cb, s))

@@ -176,6 +176,7 @@ int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, int
     if (row0 >= row1 || col0 >= col1 ||
         ((row1 - row0) * (col1 - col0) <= 4 && xmax - xmin < 4096 && ymax - ymin < 4096 &&
          !covers_any(a, b, c, row0, row1, col0, col1))) {
+#ifndef ZS_NO_MONO
         if (r->priv.line_keep && r->priv.n_tris < r->cfg.max_triangles) {
             /* hidden lines: kept out of the buckets, never rendered */
             t = &r->priv.tris[r->priv.n_tris++];
@@ -184,6 +185,7 @@ int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, int
             t->v[2] = i2;
             t->color = tag;
         }
+#endif
         return ZS_SETUP_EMPTY;
     }
     if (r->priv.n_tris >= r->cfg.max_triangles)

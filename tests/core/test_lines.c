@@ -8,28 +8,32 @@
  * the test draws: every mesh edge is classified by its faces (front or back
  * from the world-space geometry and the eye): a boundary edge of a front
  * face, a silhouette (one face front, one back), a crease (both front, the
- * normals more than the crease angle apart). Each such edge is sampled every
- * 1/10 px on screen and each sample is ray cast against every front face of
- * the scene: visible when nothing but the edge's own faces is nearer. The
- * scenes are closed meshes (cubes, spheres, a prism) and an open one (a
+ * normals more than the crease angle apart). The scenes are closed meshes (cubes, spheres, a prism) and an open one (a
  * folded sheet), each its own draw call, placed so they occlude each other
  * without interpenetrating, so the visible edges are exactly the drawing's
  * lines.
  *
+ * Each feature edge is sampled every 1/10 px on screen and each sample is
+ * ray cast against every front face (visible when nothing but the edge's
+ * own faces is nearer); where
+ * visibility changes between two samples the change is found by bisection
+ * to 1/1000 px, so the visible pieces of the edges are known as segments.
+ *
  * Checked on every scene, in both visibility modes and both 1-bit layouts:
- *  - every drawn pixel is within 1.25 px (1 px, plus the snap and the
- *    sub-pixel faces at silhouettes) of a visible edge sample (Chebyshev
- *    distance from its centre); the largest distance is printed;
+ *  - every drawn pixel is within 1 px (Chebyshev distance from its centre)
+ *    of a visible piece of a feature edge; the largest distance is printed.
+ *    Hidden edges are never drawn: a pixel near only hidden pieces fails;
  *  - at least 98% of the visible samples (so of the visible length) have a
- *    drawn pixel within that distance;
- *  - hidden samples far from any visible one never get a drawn pixel (part
- *    of the first check; counted separately);
+ *    drawn pixel within 1 px: on every model view, and over the random
+ *    scenes together (a random scene may hold a sheet seen edge-on, thinner
+ *    than a pixel, which no pixel centre sees: at least 90% there);
  *  - span == zline, page == MSB layouts, and any band height give the same
  *    drawing.
  * The same on models of Debian's assimp-testmodels (each turned three ways,
- * with a box beside it), where the files are installed; there the drawn
- * pixels may include up to 2% of false-crease pixels (sub-pixel triangles)
- * and each view must show 98% of the visible length.
+ * with a box beside it), where the files are installed.
+ * ZT_LINES_SURVEY=1 prints every scene's figures and only counts failures;
+ * ZT_LINES_DUMP=1 writes out/lines_N.ppm; ZT_LINES_PROBE=scene,x,y prints
+ * the triangles around a pixel.
  */
 #include "zt_test.h"
 
@@ -44,9 +48,7 @@
 #define H 120
 #define NSCENES 60
 #define CREASE 30
-/* 1 px, plus 1/4 px: the vertices are snapped to 1/16 px, and near-edge-on
- * faces at a silhouette may cover no pixel centre (the drawn contour is then
- * the next face's edge, up to a fraction of a pixel inside) */
+/* the bound: within 1 px of a visible edge */
 #define TOL 1.0
 /* ZT_LINES_SURVEY=1: the figures of every scene, the checks only counted */
 static int g_survey, g_survey_fails;
@@ -695,11 +697,6 @@ static void probe(ctx *c, const scene *s, int k)
         }
     }
     free(ids);
-#ifdef ZS_LINES_DEBUG
-    extern int zs_lines_dbg_x, zs_lines_dbg_y;
-    zs_lines_dbg_x = px;
-    zs_lines_dbg_y = py;
-#endif
 }
 
 static int px_on(const uint8_t *img, zs_format fmt, int x, int y)
@@ -723,9 +720,10 @@ static void test_lines_vs_oracle(void **state)
     uint8_t *img = malloc(W * H), *ref = malloc(W * H);
     uint8_t *on = malloc(W * H);
     double *dist = malloc(W * H * sizeof *dist), worst_dist = 0;
-    double worst_recall = 1;
+    double worst_recall = 1, worst_model_recall = 1;
+    int random_short = 0;
     long total_drawn = 0, total_vis = 0, total_hidden_only = 0, total_found = 0;
-    long model_stray = 0, model_drawn = 0;
+    long model_drawn = 0;
     int models_loaded = 0;
     for (int k = 0; k < NSCENES + NMODELS * MODEL_VIEWS; k++) {
         scene s;
@@ -840,40 +838,36 @@ static void test_lines_vs_oracle(void **state)
                           "edge, %.2f%% of the visible length drawn\n",
                           k_models[(k - NSCENES) / MODEL_VIEWS], (k - NSCENES) % MODEL_VIEWS,
                           drawn, stray, vis ? 100.0 * (double)found / (double)vis : 0.0);
-        /* Models: dense meshes have triangles of a pixel or less, whose normals
-         * (from 1/16 px screen vertices) can be far off, so a few pixels of a
-         * false crease may be drawn; at most 2% of the drawing. */
-        LCHECK(k >= NSCENES ? stray * 50 <= drawn : stray == 0,
-                 "scene %d: %ld of %ld drawn pixels are not near a visible edge", k, stray, drawn);
+        LCHECK(stray == 0, "scene %d: %ld of %ld drawn pixels are farther than %.2f px from a "
+               "visible edge", k, stray, drawn, TOL);
+        if (dist_scene > worst_dist) worst_dist = dist_scene;
         if (k >= NSCENES) {
-            model_stray += stray;
             model_drawn += drawn;
+            if (recall < worst_model_recall) worst_model_recall = recall;
             LCHECK(recall >= 0.98, "model view %d: %.2f%% of the visible length drawn", k,
-                     100 * recall);
-        } else if (dist_scene > worst_dist) {
-            worst_dist = dist_scene;
+                   100 * recall);
+        } else {
+            if (recall < 0.98) random_short++;
+            /* a sheet seen edge-on, or the tip of a sharp corner, is thinner
+             * than a pixel there: no pixel centre sees it, so no line can be
+             * drawn along it (the 2% of the whole set allow for them) */
+            LCHECK(recall >= 0.90, "scene %d: %.2f%% of the visible edge length drawn", k,
+                   100 * recall);
         }
-        /* sub-pixel slivers (a sheet seen edge-on) cover no pixel centre and
-         * cannot be drawn: a scene may lose a little more than the 2% the
-         * whole set may lose */
-        LCHECK(recall >= 0.95, "scene %d: %.2f%% of the visible edge length drawn", k,
-                 100 * recall);
         total_found += found;
         free(sm.v);
         free(sm.s);
-#ifdef ZS_LINES_DEBUG
-        { extern int zs_lines_dbg_x; zs_lines_dbg_x = -1; }
-#endif
+
         free(s.t);
         for (int d = 0; d < s.nmesh; d++) mesh_release(&s.meshes[d]);
     }
     double all = total_vis ? (double)total_found / total_vis : 0;
     print_message("lines: %d random scenes and the model views: %ld drawn pixels, %ld visible "
-                  "edge samples; %.2f%% of the visible length drawn (worst scene %.2f%%); on the "
-                  "random scenes every drawn pixel at most %.3f px from a visible edge; on the "
-                  "models %ld of %ld drawn pixels farther than %.2f px\n",
-                  NSCENES, total_drawn, total_vis, 100 * all, 100 * worst_recall, worst_dist,
-                  model_stray, model_drawn, TOL);
+                  "edge samples; %.2f%% of the visible length drawn (worst scene %.2f%%, worst "
+                  "model view %.2f%%, %d random scenes under 98%%); every drawn pixel at most "
+                  "%.3f px from a visible edge (models: %ld drawn pixels)\n",
+                  NSCENES, total_drawn, total_vis, 100 * all, 100 * worst_recall,
+                  100 * worst_model_recall, random_short, worst_dist, model_drawn);
     LCHECK(all >= 0.98, "%.2f%% of the visible edge length drawn", 100 * all);
     print_message("lines: %d model views (%d models of %d found)\n", models_loaded,
                   models_loaded / MODEL_VIEWS, NMODELS);

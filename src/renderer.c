@@ -25,7 +25,8 @@ static zs_status check_config(const zs_config *c)
     if (c->max_triangles == 0 || c->max_vertices == 0 || c->max_active_edges < 2 ||
         c->max_active_edges > ZS_MAX_ACTIVE_EDGES)
         return ZS_ERR_CAPACITY;
-    if (c->flags & ~(uint16_t)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES))
+    if (c->flags & ~(uint16_t)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES |
+                               ZS_CFG_ABUFFER))
         return ZS_ERR_ARGUMENT;
     return ZS_OK;
 }
@@ -47,6 +48,9 @@ static uint32_t arena_bytes32(const zs_config *c)
         ((c->flags & ZS_CFG_NO_ZLINE)
              ? 0u
              : ROUND8_32((uint32_t)c->width * 8u) + ROUND8_32((uint32_t)c->width * 2u)) +
+        ((c->flags & ZS_CFG_ABUFFER) ? (uint32_t)ZS_ABUFFER_BYTES(c->width, c->height,
+                                                                   c->max_triangles, e)
+                                     : 0u) +
         ZS_ARENA_ALIGN;
     return n;
 }
@@ -145,6 +149,8 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
         r->priv.line_next_rec = carve(&cur, (size_t)cfg->max_triangles * 6u);
         r->priv.line_vert_head = carve(&cur, (size_t)cfg->max_vertices * 2u);
     }
+    if (cfg->flags & ZS_CFG_ABUFFER)
+        r->priv.aa = zs_abuffer_carve(r, &cur);
     /* the widest guard band whose projected 28.4 coordinates fit int16 */
     dim = cfg->width > cfg->height ? cfg->width : cfg->height;
     r->priv.guard = (int32_t)(32767u / (8u * dim)) - 1;
@@ -207,6 +213,7 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
     r->priv.next_row = 0;
     r->priv.line_next = 0;
     r->priv.line_keep = 0;
+    zs_abuffer_frame(r);
     memset(r->priv.buckets, 0xFF, (size_t)r->cfg.height * 2u);
     if (r->priv.draw_starts)
         memset(r->priv.draw_starts, 0, ((size_t)r->cfg.max_triangles + 7u) / 8u);
@@ -277,6 +284,8 @@ static void mono_row(zs_renderer *r, int y, uint8_t *out)
         zs_lines_row(r, y, grey); /* renders the rows it needs */
     } else {
         zs_raster_row(r, y, grey);
+        if (r->priv.aa_mode)
+            zs_abuffer_row(r, y, grey);
     }
     zs_mono_row(r, y, grey, out);
 #endif
@@ -318,15 +327,24 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
                 zs_lines_begin(r);
         }
 #endif
+        if (r->priv.aa_mode)
+            zs_abuffer_begin(r);
         r->priv.state = ZS_STATE_RENDERING;
     }
-    for (y = r->priv.next_row; y < y0; y++)
-        if (y >= r->priv.line_next) /* hidden lines render a row ahead */
-            zs_raster_row(r, y, 0);
+    for (y = r->priv.next_row; y < y0; y++) {
+        if (y < r->priv.line_next) /* hidden lines render a row ahead */
+            continue;
+        zs_raster_row(r, y, 0);
+        if (r->priv.aa_mode)
+            zs_abuffer_row(r, y, 0);
+    }
     for (y = y0; y < y0 + rows; y++) {
-        if (!mono)
-            zs_raster_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
-        else if (r->priv.out_format == ZS_FMT_MONO_PAGE) /* a page holds 8 rows */
+        if (!mono) {
+            uint8_t *line = (uint8_t *)buf + (size_t)(y - y0) * stride;
+            zs_raster_row(r, y, line);
+            if (r->priv.aa_mode)
+                zs_abuffer_row(r, y, line);
+        } else if (r->priv.out_format == ZS_FMT_MONO_PAGE) /* a page holds 8 rows */
             mono_row(r, y, (uint8_t *)buf + (size_t)(y / 8 - y0 / 8) * stride);
         else
             mono_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);

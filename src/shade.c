@@ -167,3 +167,8 @@ void zs_fill_gouraud(const zs_renderer *r, const zs_active_color *a, int32_t dy,
     }
 #endif
 }
+
+uint32_t zs_vertex_rgb(const zs_renderer *r, const zs_tri *t, uint32_t shade)
+{
+    return vertex_rgb(r, t, shade);
+}

@@ -153,6 +153,9 @@ const char *zs_strerror(zs_status status);
                                     links and a draw-start bit per triangle record
                                     (14 B + 1 bit) and a link per vertex (2 B) */
 
+#define ZS_CFG_ABUFFER 0x20u     /* A-buffer anti-aliasing and transparency
+                                    (zs_frame_antialias): ZS_ABUFFER_BYTES */
+
 /* Sizes of the records the arena holds (checked against sizeof in src/). */
 #define ZS_VERTEX_BYTES 8u        /* screen x, y (28.4 in int16) and depth */
 #define ZS_VERTEX_SHADE_BYTES 4u  /* per-vertex colour or light, and fog */
@@ -199,7 +202,36 @@ const char *zs_strerror(zs_status status);
                                      ZS_ROUND8_((size_t)(max_tris) * 6u) +          \
                                      ZS_ROUND8_((size_t)(max_verts) * 2u)           \
                                : 0u) +                                              \
+     (((flags) & ZS_CFG_ABUFFER) ? ZS_ABUFFER_BYTES(w, h, max_tris, max_edges) : 0u) + \
      ZS_ARENA_ALIGN)
+
+/* ---- A-buffer (ZS_CFG_ABUFFER; src/abuffer.c) ----
+ * Pixels that an edge or a penetration crosses are resolved from 4x4
+ * sub-samples; the pools are fixed at compile time:
+ *  - fragments (triangle, coverage mask, depth, colour) of the pixel being
+ *    resolved: ZS_ABUFFER_FRAGMENTS, ZS_ABUFFER_FRAGMENT_BYTES each (fragments
+ *    wholly behind an opaque one that covers the pixel are not kept); a pixel
+ *    with more keeps its aliased value (zs_stats.aa_overflow);
+ *  - triangles the resolve has open on a row: ZS_ABUFFER_TRIS(max_edges), each
+ *    ZS_ABUFFER_TRI_BYTES plus 4 B of sweep lists (zs_stats.aa_skipped counts
+ *    the triangles that found it full);
+ *  - per column the row's mark (1 B); per row a bucket head (2 B); per
+ *    triangle record a bucket link and an opacity (3 B);
+ *  - opacity runs (zs_draw_opacity): ZS_ABUFFER_OPACITY_RUNS per frame. */
+#define ZS_ABUFFER_FRAGMENTS 16u
+#define ZS_ABUFFER_FRAGMENT_BYTES 48u
+#define ZS_ABUFFER_TRI_BYTES 160u
+#define ZS_ABUFFER_STATE_BYTES 96u
+#define ZS_ABUFFER_OPACITY_RUNS 16u
+#define ZS_ABUFFER_TRIS(max_edges) ((size_t)(max_edges) / 2u + (size_t)(max_edges) / 8u + 4u)
+#define ZS_ABUFFER_BYTES(w, h, max_tris, max_edges)                                 \
+    (ZS_ROUND8_(ZS_ABUFFER_STATE_BYTES) +                                            \
+     ZS_ROUND8_(ZS_ABUFFER_FRAGMENTS * ZS_ABUFFER_FRAGMENT_BYTES) +                  \
+     ZS_ROUND8_((size_t)(w)) + ZS_ROUND8_((size_t)(h) * 2u + 2u) +                  \
+     ZS_ROUND8_((size_t)(max_tris) * 3u) +                                          \
+     ZS_ROUND8_(ZS_ABUFFER_TRIS(max_edges) * ZS_ABUFFER_TRI_BYTES) +                 \
+     2u * ZS_ROUND8_(ZS_ABUFFER_TRIS(max_edges) * 2u) +                             \
+     ZS_ROUND8_(ZS_ABUFFER_OPACITY_RUNS * 4u))
 
 /* Both visibility modes, Gouraud and fog; no 1-bit output, no hidden lines. */
 #define ZS_ARENA_BYTES(w, h, max_tris, max_verts, max_edges)                        \
@@ -407,6 +439,13 @@ typedef struct zs_stats {
     uint32_t depth_evals;      /* plane evaluations for visibility */
     uint32_t crossings;        /* penetration crossings split inside a row */
     uint32_t pixels_shaded;    /* pixel writes (== width * rows: each pixel once) */
+    /* A-buffer (zs_frame_antialias; 0 when it is off) */
+    uint32_t aa_pixels;        /* pixels resolved from sub-samples */
+    uint32_t aa_fragments;     /* fragments (triangle, mask) they were resolved from */
+    uint32_t aa_overflow;      /* pixels left aliased: the row's fragment pool was full */
+    uint32_t aa_skipped;       /* triangles left out of the resolve: its pool was full */
+    uint32_t aa_max_fragments; /* most fragments one pixel needed (of
+                                  ZS_ABUFFER_FRAGMENTS) */
 } zs_stats;
 
 /* ------------------------------------------------------------------ */
@@ -480,6 +519,9 @@ typedef struct zs_renderer_private {
     int64_t line_depth_a;             /* far / (far - near), Q30: 1/w ~ A - depth */
     zs_setup_hook_fn setup_hook;
     void *setup_hook_user;
+    /* A-buffer (abuffer.c) */
+    struct zs_aa_state *aa;           /* its pools; NULL without ZS_CFG_ABUFFER */
+    uint8_t aa_mode;                  /* zs_aa_mode of the frame */
 } zs_renderer_private;
 
 /* Holds the arena's pools and the frame state. The struct is public so it
@@ -549,6 +591,27 @@ zs_format zs_frame_format(const zs_renderer *r);
 
 /* Statistics of the current (or last) frame. */
 const zs_stats *zs_frame_stats(const zs_renderer *r);
+
+/* ---- A-buffer: anti-aliased edges and transparency (ZS_CFG_ABUFFER) ---- */
+typedef enum zs_aa_mode {
+    ZS_AA_OFF = 0,          /* as without the A-buffer, byte for byte */
+    ZS_AA_EDGES = 1,        /* pixels crossed by an edge or a penetration are the
+                               box-filtered mean of 4x4 sub-samples */
+    ZS_AA_TRANSPARENT = 2   /* edges, and draws with an opacity below 255
+                               (zs_draw_opacity) blended in depth order */
+} zs_aa_mode;
+/* Per frame, after zs_frame_shading and before the first zs_draw. Needs
+ * ZS_CFG_ABUFFER and ZS_MODE_SPAN (ZS_MODE_ZLINE: ZS_ERR_MODE); an unknown
+ * mode is ZS_ERR_ARGUMENT. zs_frame_begin resets it to ZS_AA_OFF. Triangles
+ * that cover sub-samples but no pixel centre are stored too (for the
+ * resolve only). ZS_FMT_ID16 writes the tag that covers most sub-samples. */
+zs_status zs_frame_antialias(zs_renderer *r, zs_aa_mode mode);
+/* Opacity (0 = invisible .. 255 = opaque) of the draws that follow, in
+ * ZS_AA_TRANSPARENT frames (else ZS_ERR_MODE). A frame holds up to
+ * ZS_ABUFFER_OPACITY_RUNS changes (then ZS_ERR_CAPACITY). Transparent
+ * surfaces in front of the nearest opaque one are blended per sub-sample,
+ * far to near: c = c + (surface - c) * opacity / 255. */
+zs_status zs_draw_opacity(zs_renderer *r, uint8_t opacity);
 
 /* Debug/verification hook: called for every triangle record stored by
  * zs_draw with its tag, the snapped screen vertices (x0,y0,x1,y1,x2,y2 in

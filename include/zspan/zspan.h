@@ -487,14 +487,10 @@ typedef struct zs_renderer_private {
     uint8_t *mono_grey;             /* ZS_CFG_MONO: the row in GRAY8 before dithering */
     int16_t *mono_err;              /* ZS_CFG_MONO: diffusion error for the next row */
     uint16_t *line_ids[2];          /* ZS_CFG_LINES: this row's and the next row's ids */
-    uint8_t *line_pending;          /* ZS_CFG_LINES: flags the next row has got */
     int16_t *tri_normal;            /* ZS_CFG_LINES: unit normal (Q14) and draw number
                                        per record */
     uint8_t *draw_starts;           /* ZS_CFG_LINES: bit per record, set where a draw's
                                        records begin */
-    uint16_t *line_vert_head;       /* ZS_CFG_LINES: per pool vertex, a record using it */
-    uint16_t *line_next_rec;        /* ZS_CFG_LINES: per record corner, the next record
-                                       using that corner's vertex */
     int32_t guard;                  /* guard band, in units of w */
     /* frame state */
     zs_vec3 light_dir[ZS_MAX_LIGHTS]; /* unit, Q16.16 */
@@ -510,18 +506,23 @@ typedef struct zs_renderer_private {
     uint8_t steep;                    /* a steep plane is active this frame */
     uint8_t out_format;               /* the format asked for; shade.format is the
                                          scratch line's (GRAY8, ID16) for 1-bit ones */
-    int32_t line_next;                /* hidden lines: the next row to render (rows
-                                         are rendered one ahead of the output) */
-    int32_t crease_cos;               /* cos of the crease angle, Q28 */
     uint8_t line_keep;                /* a hidden-line frame: records of the triangles
                                          that hold no pixel centre are kept (not
                                          rendered) so the mesh around them is known */
+    int32_t crease_cos;               /* cos of the crease angle, Q28 */
     int64_t line_depth_a;             /* far / (far - near), Q30: 1/w ~ A - depth */
     zs_setup_hook_fn setup_hook;
     void *setup_hook_user;
     /* A-buffer (abuffer.c) */
     struct zs_aa_state *aa;           /* its pools; NULL without ZS_CFG_ABUFFER */
     uint8_t aa_mode;                  /* zs_aa_mode of the frame */
+    /* hidden lines (lines.c), ZS_CFG_LINES */
+    uint8_t *line_pending;            /* flags the next row has got */
+    uint16_t *line_vert_head;         /* per pool vertex, a record using it */
+    uint16_t *line_next_rec;          /* per record corner, the next record using that
+                                         corner's vertex */
+    int32_t line_next;                /* the next row to render (rows are rendered one
+                                         ahead of the output) */
 } zs_renderer_private;
 
 /* Holds the arena's pools and the frame state. The struct is public so it

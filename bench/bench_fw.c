@@ -196,6 +196,33 @@ int main(void)
             }
         }
     }
+    { /* the textured scene (bench_tex_frame): host == M4 == M0, and its cost */
+        zs_config cfg = bench_tex_config();
+        size_t need = zs_arena_bytes(&cfg);
+        int k;
+        if (need > free_bytes || zs_init(&r, free_ram, need, &cfg) != ZS_OK) {
+            sh_printf("E %s textured init\n", board);
+            errors++;
+        } else {
+            for (k = 0; k < BENCH_TEX_VARIANTS; k++) {
+                uint32_t sum = 0;
+                uint64_t a = port_ticks(), b;
+                zs_status st = bench_tex_frame(&r, &cam, k, &sum, 0);
+                b = port_ticks();
+                if (st != ZS_OK) {
+                    sh_printf("E %s textured %s 0 %s\n", board, bench_tex_names[k],
+                              zs_strerror(st));
+                    errors++;
+                    continue;
+                }
+                sh_printf("R %s textured %s 0 instr=%lu sum=%08lx dropped=%lu\n", board,
+                          bench_tex_names[k], (unsigned long)((b - a) * ipt / 1000u),
+                          (unsigned long)sum,
+                          (unsigned long)(r.stats.tris_dropped + r.stats.verts_dropped +
+                                          r.stats.records_skipped));
+            }
+        }
+    }
     sh_printf("M %s static_ram=%u stack_used=%u stack_size=%u\n", board,
               (unsigned)port_static_ram(), (unsigned)port_stack_high_water(),
               (unsigned)port_stack_size());

@@ -191,6 +191,30 @@ int main(int argc, char **argv)
             if (render_scene(s, &cfg, &cam, modes, frames, 1, ppm, &use) != 0)
                 return 1;
             failures += use.frames_dropping;
+            if (mono) { /* the firmware test's textured frames (bench_tex_frame) */
+                static zs_renderer tr;
+                static uint8_t tarena[64 * 1024];
+                zs_config tc = bench_tex_config();
+                int k;
+                if (zs_arena_bytes(&tc) > sizeof tarena ||
+                    zs_init(&tr, tarena, sizeof tarena, &tc) != ZS_OK) {
+                    fprintf(stderr, "bench_host: textured init failed\n");
+                    return 1;
+                }
+                for (k = 0; k < BENCH_TEX_VARIANTS; k++) {
+                    uint32_t sum = 0, covered = 0;
+                    zs_status st = bench_tex_frame(&tr, &cam, k, &sum, &covered);
+                    if (st != ZS_OK) {
+                        fprintf(stderr, "bench_host: textured %s: %s\n", bench_tex_names[k],
+                                zs_strerror(st));
+                        return 1;
+                    }
+                    printf("R host textured %s 0 sum=%08lx covered=%lu dropped=%lu\n",
+                           bench_tex_names[k], (unsigned long)sum, (unsigned long)covered,
+                           (unsigned long)(tr.stats.tris_dropped + tr.stats.verts_dropped +
+                                           tr.stats.records_skipped));
+                }
+            }
             if (mono) { /* the firmware test's 1-bit frames (bench_mono_frame) */
                 static zs_renderer mr;
                 static uint8_t marena[64 * 1024];

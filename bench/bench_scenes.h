@@ -54,6 +54,23 @@ zs_status bench_submit(zs_renderer *r, const zs_camera *cam, const bench_scene *
 extern const char *const bench_mono_names[BENCH_MONO_VARIANTS];
 zs_status bench_mono_frame(zs_renderer *r, const zs_camera *cam, const bench_scene *s, int k,
                            uint32_t *sum);
+/* The textured scene in the host == M4 == M0 checksum test and the bench: a
+ * ground trapezoid 1.2..30 units ahead with its texture repeated and a
+ * textured cube of side 1.2 at T(0, -0.25, -3.5) * Rx(20) * Ry(30), RGB565
+ * big-endian rows; variant k: 0 "tex-plain" (the same untextured, flat
+ * colours: the baseline), 1 "tex-nearest" (64 x 64 RGB565, nearest, exact,
+ * unlit), 2 "tex-nearest-zline" (1 in z-buffer mode: the same bytes),
+ * 3 "tex-subdiv" (1 subdivided), 4 "tex-bilinear" (bilinear, exact, flat
+ * lit), 5 "tex-lit-fog" (32 x 32 palette, bilinear, subdivided, clamped,
+ * Gouraud lit with vertex colours, fog). The renderer: bench_tex_config().
+ * The checksum is FNV-1a 32 over the rows in order; covered (may be NULL)
+ * gets the number of pixels that are not the background (the bench's
+ * textured pixels). */
+#define BENCH_TEX_VARIANTS 6
+extern const char *const bench_tex_names[BENCH_TEX_VARIANTS];
+zs_config bench_tex_config(void);
+zs_status bench_tex_frame(zs_renderer *r, const zs_camera *cam, int k, uint32_t *sum,
+                          uint32_t *covered);
 /* FNV-1a 32 of n bytes, continuing from h. */
 uint32_t bench_fnv1a(uint32_t h, const uint8_t *p, size_t n);
 

@@ -80,9 +80,10 @@ static zs_mat34 place(int32_t deg, zs_fixed tx, zs_fixed ty, zs_fixed tz, int32_
 
 static zs_status submit(zs_renderer *r, const zs_camera *cam, int gouraud, int zline, int frame)
 {
-    zs_mesh cube = {cube_pos, cube_idx, cube_colors, NULL, NULL, NULL, ZS_FX_RATIO(1, 2), 8, 12, 0};
+    zs_mesh cube = {cube_pos, cube_idx, cube_colors, NULL, NULL, NULL, ZS_FX_RATIO(1, 2), 8, 12, 0,
+                    NULL, NULL};
     zs_mesh octa = {octa_pos, octa_idx, NULL, octa_colors, NULL, octa_nrm, ZS_FX_RATIO(7, 10),
-                    6, 8, 0};
+                    6, 8, 0, NULL, NULL};
     zs_shade_params p = zs_shade_default();
     int32_t a = 9 * (int32_t)frame;
     zs_mat34 m;

@@ -92,7 +92,10 @@ static void intersect(const zs_renderer *r, int p, const zs_svert *in, const zs_
      * depends on its w, so that is set first) */
     b = plane_bound(r, p, v->w);
     *coord(v, p >> 1) = p & 1 ? b : -b;
-    v->shade = lerp_shade(in->shade, out->shade, zs_muldiv64((int64_t)1 << 28, din, den, 0));
+    b = zs_muldiv64((int64_t)1 << 28, din, den, 0); /* the cut's parameter, Q28 */
+    v->shade = lerp_shade(in->shade, out->shade, b);
+    v->uv[0] = (int16_t)lerp32(in->uv[0], out->uv[0], b);
+    v->uv[1] = (int16_t)lerp32(in->uv[1], out->uv[1], b);
     v->pool = ZS_NONE;
 }
 

@@ -37,6 +37,10 @@ const char *zs_strerror(zs_status status)
     case ZS_ERR_LEVEL:
         return "malformed level or PVS data (zspan/portal.h): a count, index, cell polygon, "
                "portal or PVS row that zs_level_check refuses";
+    case ZS_ERR_TEXTURE:
+        return "bad texture (see zs_texture_check): a size that is not a power of two in "
+               "1..ZS_TEX_MAX_DIM, no texels (or palette), an unknown format or flags, or a mesh "
+               "with uvs and no texture or the other way round";
     case ZS_STATUS_COUNT: break;
     }
     return "unknown status code";

@@ -23,6 +23,7 @@ typedef struct draw_ctx {
     uint8_t lit;           /* lighting changes colours */
     uint8_t vertex_light;  /* lighting per vertex (Gouraud with vertex normals) */
     uint8_t vertex_color;  /* Gouraud with per-vertex colours */
+    uint8_t tex_slot;      /* the mesh's texture slot (texture.c), 0 = none */
     uint32_t tri_flags;
     int32_t clip[3][3];    /* int16 position -> xc, yc, w, Q32 (scale and projection folded in) */
     int64_t clip_t[3];     /* the translations, Q16 */
@@ -392,6 +393,8 @@ static ZS_COLD int clip_and_setup(draw_ctx *c, uint16_t base, uint32_t t, uint16
         to_clip(c, idx[k], &v[k].xc, &v[k].yc, &v[k].w);
         v[k].shade = r->priv.vshade ? r->priv.vshade[base + idx[k]] : 0;
         v[k].pool = (pv->z & ZS_VERT_UNPROJECTED) ? (uint16_t)ZS_NONE : (uint16_t)(base + idx[k]);
+        v[k].uv[0] = c->tex_slot ? c->mesh->uvs[2u * idx[k]] : 0;
+        v[k].uv[1] = c->tex_slot ? c->mesh->uvs[2u * idx[k] + 1u] : 0;
         and_codes &= zs_outcode(r, v[k].xc, v[k].yc, v[k].w);
     }
     if (and_codes & REJECT_MASK)
@@ -411,8 +414,15 @@ static ZS_COLD int clip_and_setup(draw_ctx *c, uint16_t base, uint32_t t, uint16
         return ZS_SETUP_REJECTED;
     color = face_color(c, t);
     for (k = 0; k < n; k++)
-        if (v[k].pool == ZS_NONE)
+        if (v[k].pool == ZS_NONE) {
             v[k].pool = zs_project_vertex(r, v[k].xc, v[k].yc, (int32_t)v[k].w, v[k].shade);
+            if (r->priv.tex_verts && v[k].pool != ZS_NONE) { /* texture.c's record */
+                zs_tex_vert *tv = &r->priv.tex_verts[v[k].pool];
+                tv->u = v[k].uv[0];
+                tv->v = v[k].uv[1];
+                tv->slot = c->tex_slot;
+            }
+        }
     for (k = 1; k + 1 < n; k++) {
         int piece;
         if (v[0].pool == ZS_NONE || v[k].pool == ZS_NONE || v[k + 1].pool == ZS_NONE)
@@ -480,6 +490,12 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     for (i = 0; i < 3u * m->triangle_count; i++)
         if (m->indices[i] >= m->vertex_count)
             return ZS_ERR_INDEX;
+    c.tex_slot = 0;
+    if (m->uvs || m->texture) { /* texture.c checks it and takes a slot */
+        zs_status st = zs_tex_draw(r, m, &c.tex_slot);
+        if (st != ZS_OK)
+            return st;
+    }
     c.r = r;
     c.mesh = m;
     c.model = model ? model : &zs_identity34;
@@ -493,7 +509,8 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
         (uint8_t)(r->shade.shading == ZS_SHADE_GOURAUD && c.lit && m->vertex_normals != 0);
     c.vertex_color = (uint8_t)(r->shade.shading == ZS_SHADE_GOURAUD && m->vertex_colors != 0);
     c.tri_flags = ((c.vertex_light || c.vertex_color) ? ZS_TRI_MODULATE : 0u) |
-                  (r->shade.fog.enabled ? ZS_TRI_FOG : 0u);
+                  ((r->shade.fog.enabled && !c.tex_slot) ? ZS_TRI_FOG : 0u) | /* texture.c fogs */
+                  (c.tex_slot ? ZS_TRI_TEXTURED : 0u);
 
     /* vertices: transform all that fit the pool (capacity policy: the last
      * vertices are dropped, and so are the triangles that use them) */
@@ -503,6 +520,8 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     vfit = m->vertex_count < room ? m->vertex_count : room;
     r->stats.verts_dropped += m->vertex_count - vfit;
     inside = transform_vertices(&c, base, vfit);
+    if (r->priv.tex_verts)
+        zs_tex_vertices(r, m, base, vfit, c.tex_slot);
     r->priv.n_verts = (uint16_t)(base + vfit);
     r->stats.verts_stored = r->priv.n_verts;
 

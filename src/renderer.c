@@ -26,8 +26,10 @@ static zs_status check_config(const zs_config *c)
         c->max_active_edges > ZS_MAX_ACTIVE_EDGES)
         return ZS_ERR_CAPACITY;
     if (c->flags & ~(uint16_t)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES |
-                               ZS_CFG_ABUFFER))
+                               ZS_CFG_TEXTURE | ZS_CFG_ABUFFER))
         return ZS_ERR_ARGUMENT;
+    if ((c->flags & ZS_CFG_TEXTURE) && (c->flags & ZS_CFG_ABUFFER))
+        return ZS_ERR_ARGUMENT; /* the resolve's fragments carry no texture (yet) */
     return ZS_OK;
 }
 
@@ -40,14 +42,20 @@ static uint32_t arena_bytes32(const zs_config *c)
     uint32_t e = c->max_active_edges, a = e / 2u, n;
     int flat = (c->flags & ZS_CFG_FLAT_ONLY) != 0;
     n = ROUND8_32((uint32_t)c->max_vertices * ZS_VERTEX_BYTES) +
-        (flat ? 0u : ROUND8_32((uint32_t)c->max_vertices * ZS_VERTEX_SHADE_BYTES)) +
+        (flat && !(c->flags & ZS_CFG_TEXTURE) ? 0u : ROUND8_32((uint32_t)c->max_vertices * ZS_VERTEX_SHADE_BYTES)) +
         ROUND8_32((uint32_t)c->max_triangles * ZS_TRIANGLE_BYTES) +
         ROUND8_32((uint32_t)c->height * 2u) + ROUND8_32(e * ZS_EDGE_BYTES) +
         2u * ROUND8_32(e * 2u) + ROUND8_32(a * ZS_ACTIVE_BYTES) +
-        (flat ? 0u : ROUND8_32(a * ZS_ACTIVE_COLOR_BYTES)) + 2u * ROUND8_32(a * 2u) +
+        (flat && !(c->flags & ZS_CFG_TEXTURE) ? 0u : ROUND8_32(a * ZS_ACTIVE_COLOR_BYTES)) +
+        2u * ROUND8_32(a * 2u) +
         ((c->flags & ZS_CFG_NO_ZLINE)
              ? 0u
              : ROUND8_32((uint32_t)c->width * 8u) + ROUND8_32((uint32_t)c->width * 2u)) +
+        ((c->flags & ZS_CFG_TEXTURE)
+             ? ROUND8_32((uint32_t)c->max_vertices * ZS_TEX_VERTEX_BYTES) +
+                   ROUND8_32(a * ZS_ACTIVE_TEX_BYTES) +
+                   ROUND8_32(ZS_MAX_FRAME_TEXTURES * (uint32_t)sizeof(void *))
+             : 0u) +
         ((c->flags & ZS_CFG_ABUFFER) ? (uint32_t)ZS_ABUFFER_BYTES(c->width, c->height,
                                                                    c->max_triangles, e)
                                      : 0u) +
@@ -117,14 +125,16 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
     cur = arena;
     cur += (ZS_ARENA_ALIGN - ((uintptr_t)cur & (ZS_ARENA_ALIGN - 1u))) & (ZS_ARENA_ALIGN - 1u);
     r->priv.verts = carve(&cur, (size_t)cfg->max_vertices * sizeof(zs_vert));
-    r->priv.vshade = flat ? 0 : carve(&cur, (size_t)cfg->max_vertices * 4u);
+    /* textured triangles are set up through the per-vertex shade path */
+    r->priv.vshade = flat && !(cfg->flags & ZS_CFG_TEXTURE) ? 0 : carve(&cur, (size_t)cfg->max_vertices * 4u);
     r->priv.tris = carve(&cur, (size_t)cfg->max_triangles * sizeof(zs_tri));
     r->priv.buckets = carve(&cur, (size_t)cfg->height * 2u);
     r->priv.edges = carve(&cur, e * sizeof(zs_edge));
     r->priv.ael = carve(&cur, e * 2u);
     r->priv.edge_free = carve(&cur, e * 2u);
     r->priv.active = carve(&cur, a * sizeof(zs_active));
-    r->priv.acolor = flat ? 0 : carve(&cur, a * sizeof(zs_active_color));
+    /* textured fills are reached through the colour planes' fill */
+    r->priv.acolor = flat && !(cfg->flags & ZS_CFG_TEXTURE) ? 0 : carve(&cur, a * sizeof(zs_active_color));
     r->priv.in_set = carve(&cur, a * 2u);
     r->priv.active_free = carve(&cur, a * 2u);
     if (!(cfg->flags & ZS_CFG_NO_ZLINE)) {
@@ -148,6 +158,12 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
         r->priv.draw_starts = carve(&cur, ((size_t)cfg->max_triangles + 7u) / 8u);
         r->priv.line_next_rec = carve(&cur, (size_t)cfg->max_triangles * 6u);
         r->priv.line_vert_head = carve(&cur, (size_t)cfg->max_vertices * 2u);
+    }
+    if (cfg->flags & ZS_CFG_TEXTURE) {
+        r->priv.tex_verts = carve(&cur, (size_t)cfg->max_vertices * sizeof(zs_tex_vert));
+        r->priv.atex = carve(&cur, a * sizeof(zs_active_tex));
+        memset(r->priv.atex, 0, a * sizeof(zs_active_tex)); /* serial 0: made in no frame */
+        r->priv.textures = carve(&cur, ZS_MAX_FRAME_TEXTURES * sizeof(void *));
     }
     if (cfg->flags & ZS_CFG_ABUFFER)
         r->priv.aa = zs_abuffer_carve(r, &cur);
@@ -206,6 +222,8 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
         r->priv.depth_scale = f < 8 * (f - n) ? (f * ((int64_t)1 << 30)) / (f - n) : 0;
     }
     memset(&r->stats, 0, sizeof r->stats);
+    r->priv.n_textures = 0;
+    r->priv.tex_serial++;
     reset_shading(r);
     r->priv.n_verts = 0;
     r->priv.n_tris = 0;

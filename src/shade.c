@@ -78,6 +78,9 @@ void zs_shade_setup(const zs_renderer *r, zs_active *a, zs_active_color *ac, con
     } else {
         for (k = 0; k < 3; k++)
             c[k] = vertex_rgb(r, t, r->priv.vshade[t->v[k]]);
+        /* a textured record's light always gets planes: its fill goes
+         * through zs_fill_gouraud to texture.c (bit 26 is no channel's) */
+        c[0] ^= ((t->color >> 24) & ZS_TRI_TEXTURED) << 24;
     }
     if (c[0] == c[1] && c[1] == c[2]) {
         a->flags &= (uint8_t)~ZS_ACT_GOURAUD;
@@ -135,6 +138,14 @@ void zs_fill_gouraud(const zs_renderer *r, const zs_active_color *a, int32_t dy,
     uint32_t dr = (uint32_t)a->cdx[0], dg = (uint32_t)a->cdx[1], db = (uint32_t)a->cdx[2];
     uint8_t *p = row + (size_t)x0 * r->priv.bpp;
     int x;
+    if (r->priv.atex) { /* ZS_CFG_TEXTURE: a textured record's fill is texture.c's */
+        uint16_t ai = (uint16_t)(a - r->priv.acolor);
+        const zs_active *act = &r->priv.active[ai];
+        if ((r->priv.tris[act->tri].color >> 24) & ZS_TRI_TEXTURED) {
+            zs_fill_textured(r, ai, dy + act->y0, row, x0, x1);
+            return;
+        }
+    }
 #if defined(__OPTIMIZE_SIZE__)
     /* built for size: one loop packing through zs_pack_pixel */
     for (x = x0; x < x1; x++, p += r->priv.bpp) {

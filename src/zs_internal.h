@@ -35,6 +35,8 @@ typedef struct zs_tri {
 } zs_tri;
 #define ZS_TRI_MODULATE 0x01u  /* colour_i = face * vertex rgb_i / 255 */
 #define ZS_TRI_FOG 0x02u       /* blend toward the fog colour by vertex fog */
+#define ZS_TRI_TEXTURED 0x04u  /* textured: its light always in colour planes, so
+                                  zs_fill_gouraud hands its spans to texture.c */
 
 /* An edge stepped down the rows (28 bytes). Column = ceil(x - 0.5) exactly:
  * x is the integer column, err the remainder of the exact rational.
@@ -145,6 +147,7 @@ typedef struct zs_svert {        /* a vertex on its way to setup */
     int64_t xc, yc, w;           /* clip space, Q16.16, never saturated */
     uint32_t shade;
     uint16_t pool;               /* pool index when already projected, else ZS_NONE */
+    int16_t uv[2];               /* texture coordinates (ZS_CFG_TEXTURE) */
 } zs_svert;
 enum { ZS_SETUP_STORED, ZS_SETUP_CULLED, ZS_SETUP_EMPTY, ZS_SETUP_REJECTED, ZS_SETUP_DROPPED };
 /* Projects a clip-space vertex into the pool; returns its index or ZS_NONE. */
@@ -260,6 +263,42 @@ void zs_shade_setup(const zs_renderer *r, zs_active *a, zs_active_color *ac, con
                     const zs_vert *v[3], int32_t ox, int32_t oy, const zs_recip *area2,
                     int32_t y);
 uint32_t zs_light_color(uint32_t rgb, zs_fixed intensity);
+
+/* texture.c: texture mapping (ZS_CFG_TEXTURE) */
+typedef struct zs_tex_vert {
+    int16_t u, v;   /* zs_mesh.uvs, or interpolated by the clipper */
+    uint8_t slot;   /* 1 + index into priv.textures; 0 = untextured */
+    uint8_t pad;
+} zs_tex_vert;
+typedef struct zs_active_tex {
+    uint64_t q[3], s[3], t[3]; /* planes (row y0 at column 0, per column, per
+                                  row), wrapping: 1/w, s/w, t/w (texel
+                                  coordinates in 1/256 texel) */
+    uint32_t f[3];             /* fog plane, Q8.16 wrapping (same layout) */
+    uint32_t serial;           /* priv.tex_serial of the frame it was made in */
+    int32_t s_base, t_base;    /* whole texels added to the texel indices */
+    int32_t s_max, t_max;      /* the texel coordinates' range (1/256 texel) */
+    int32_t q_min_hi;          /* smallest vertex 1/w, plane units >> 16 */
+    int16_t y0;                /* the activation row the planes refer to */
+    uint8_t slot, flags;       /* texture slot; ZS_ATEX_* */
+    uint16_t tri;              /* the record they were made for (with serial and
+                                  y0: made on the first span, for the record in
+                                  that active slot) */
+    uint16_t pad[3];
+} zs_active_tex;
+#define ZS_ATEX_FOG 0x01u      /* fogged */
+typedef char zs_check_tex_vert[(sizeof(zs_tex_vert) == ZS_TEX_VERTEX_BYTES) ? 1 : -1];
+typedef char zs_check_atex[(sizeof(zs_active_tex) == ZS_ACTIVE_TEX_BYTES) ? 1 : -1];
+/* zs_draw: checks a mesh's texture and takes its frame slot (*slot 0 for an
+ * untextured mesh); an error stores nothing. */
+zs_status zs_tex_draw(zs_renderer *r, const zs_mesh *m, uint8_t *slot);
+/* The texture coordinates of the draw's vertices base .. base + n - 1. */
+void zs_tex_vertices(zs_renderer *r, const zs_mesh *m, uint16_t base, uint32_t n, uint8_t slot);
+/* Fills [x0, x1) of row y with active triangle ai's texture (its record
+ * ZS_TRI_TEXTURED; its light in the colour planes); makes the texture planes
+ * on the triangle's first span. */
+void zs_fill_textured(const zs_renderer *r, uint16_t ai, int32_t y, uint8_t *row, int x0,
+                      int x1);
 
 /* span.c / zline.c: one row's visibility */
 void zs_span_row(zs_renderer *r, int y, uint8_t *row);

@@ -1100,8 +1100,9 @@ static void write_files(const options *o, const model *m, const char *name, long
     else
         fprintf(fc, "    NULL, /* vertex_normals */\n");
     fprintf(fc, "    %ld, /* scale, Q16.16 */\n    %zuu, /* vertex_count */\n"
-                "    %zuu, /* triangle_count */\n    0x%06lXu /* color */\n};\n",
+                "    %zuu, /* triangle_count */\n    0x%06lXu, /* color */\n",
             qscale, m->nv, m->nt, (unsigned long)om.color);
+    fprintf(fc, "    NULL, /* uvs */\n    NULL /* texture */\n};\n");
     if (fclose(fc) != 0)
         die(EXIT_IO, "cannot write %s", cpath);
     free(cpath);

@@ -76,7 +76,7 @@ int main(int argc, char **argv)
     const char *path = argc > 1 ? argv[1] : "frame.ppm";
     zs_config cfg = zs_config_default(W, H, 24, 16, 16);
     zs_mesh cube = {cube_pos, cube_idx, cube_colors, NULL, NULL, NULL, ZS_FX_RATIO(7, 10), 8, 12,
-                    0};
+                    0, NULL, NULL};
     zs_vec3 eye = zs_vec3_make(0, ZS_FX(1), ZS_FX(4));
     zs_vec3 target = zs_vec3_make(0, 0, 0), up = zs_vec3_make(0, ZS_FX(1), 0);
     zs_shade_params look = zs_shade_default();

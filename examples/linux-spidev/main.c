@@ -42,7 +42,8 @@ int main(int argc, char **argv)
     zs_panel lcd;
     zs_linux_cfg cfg = zs_linux_cfg_default();
     zs_config rc = zs_config_default(W, H, 12, 16, 12);
-    zs_mesh cube = {cube_pos, cube_idx, NULL, cube_colors, NULL, NULL, ZS_FX_RATIO(8, 10), 8, 12, 0};
+    zs_mesh cube = {cube_pos, cube_idx, NULL, cube_colors, NULL, NULL, ZS_FX_RATIO(8, 10), 8, 12, 0,
+                    NULL, NULL};
     zs_mat34 view = zs_mat34_identity();
     zs_camera cam;
     char err[256];

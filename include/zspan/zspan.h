@@ -125,6 +125,7 @@ typedef enum zs_status {
                              config's flags left out */
     ZS_ERR_ARGUMENT,      /* any other argument out of its documented range */
     ZS_ERR_LEVEL,         /* malformed level or PVS data (zspan/portal.h) */
+    ZS_ERR_TEXTURE,       /* bad texture: see zs_texture_check */
     ZS_STATUS_COUNT
 } zs_status;
 
@@ -152,6 +153,12 @@ const char *zs_strerror(zs_status status);
                                     1 B shared with ZS_CFG_MONO), a normal, three
                                     links and a draw-start bit per triangle record
                                     (14 B + 1 bit) and a link per vertex (2 B) */
+#define ZS_CFG_TEXTURE 0x10u     /* texture mapping (zs_mesh.uvs, zs_mesh.texture):
+                                    6 B per vertex, ZS_ACTIVE_TEX_BYTES per active
+                                    triangle (and the shade words and colour
+                                    planes even with ZS_CFG_FLAT_ONLY), a table of
+                                    ZS_MAX_FRAME_TEXTURES texture pointers; not
+                                    with ZS_CFG_ABUFFER (ZS_ERR_ARGUMENT) */
 
 #define ZS_CFG_ABUFFER 0x20u     /* A-buffer anti-aliasing and transparency
                                     (zs_frame_antialias): ZS_ABUFFER_BYTES */
@@ -164,6 +171,9 @@ const char *zs_strerror(zs_status status);
 #define ZS_ACTIVE_BYTES 56u       /* per active triangle: depth plane, span state */
 #define ZS_ACTIVE_COLOR_BYTES 36u /* per active triangle: colour planes */
 #define ZS_TRI_NORMAL_BYTES 8u    /* ZS_CFG_LINES: a record's eye-space normal, draw */
+#define ZS_TEX_VERTEX_BYTES 6u    /* ZS_CFG_TEXTURE: a vertex's u, v and texture slot */
+#define ZS_ACTIVE_TEX_BYTES 120u  /* ZS_CFG_TEXTURE: per active triangle, texture planes */
+#define ZS_MAX_FRAME_TEXTURES 16u /* distinct textures one frame may draw with */
 #define ZS_ARENA_ALIGN 8u
 
 /* Internal: n rounded up to a multiple of ZS_ARENA_ALIGN. */
@@ -181,14 +191,15 @@ const char *zs_strerror(zs_status status);
  * per triangle record and 2 B per vertex. */
 #define ZS_ARENA_BYTES_CFG(w, h, max_tris, max_verts, max_edges, flags)            \
     (ZS_ROUND8_((size_t)(max_verts) * ZS_VERTEX_BYTES) +                            \
-     (((flags) & ZS_CFG_FLAT_ONLY) ? 0u                                             \
-                                   : ZS_ROUND8_((size_t)(max_verts) * ZS_VERTEX_SHADE_BYTES)) + \
+     ((((flags) & (ZS_CFG_FLAT_ONLY | ZS_CFG_TEXTURE)) == ZS_CFG_FLAT_ONLY)         \
+          ? 0u                                                                      \
+          : ZS_ROUND8_((size_t)(max_verts) * ZS_VERTEX_SHADE_BYTES)) +              \
      ZS_ROUND8_((size_t)(max_tris) * ZS_TRIANGLE_BYTES) +                           \
      ZS_ROUND8_((size_t)(h) * 2u) +                                                 \
      ZS_ROUND8_((size_t)(max_edges) * ZS_EDGE_BYTES) +                              \
      2u * ZS_ROUND8_((size_t)(max_edges) * 2u) +                                    \
      ZS_ROUND8_((size_t)((max_edges) / 2u) * ZS_ACTIVE_BYTES) +                     \
-     (((flags) & ZS_CFG_FLAT_ONLY)                                                  \
+     ((((flags) & (ZS_CFG_FLAT_ONLY | ZS_CFG_TEXTURE)) == ZS_CFG_FLAT_ONLY)         \
           ? 0u                                                                      \
           : ZS_ROUND8_((size_t)((max_edges) / 2u) * ZS_ACTIVE_COLOR_BYTES)) +       \
      2u * ZS_ROUND8_((size_t)((max_edges) / 2u) * 2u) +                             \
@@ -202,6 +213,11 @@ const char *zs_strerror(zs_status status);
                                      ZS_ROUND8_((size_t)(max_tris) * 6u) +          \
                                      ZS_ROUND8_((size_t)(max_verts) * 2u)           \
                                : 0u) +                                              \
+     (((flags) & ZS_CFG_TEXTURE)                                                    \
+          ? ZS_ROUND8_((size_t)(max_verts) * ZS_TEX_VERTEX_BYTES) +                 \
+                ZS_ROUND8_((size_t)((max_edges) / 2u) * ZS_ACTIVE_TEX_BYTES) +      \
+                ZS_ROUND8_((size_t)ZS_MAX_FRAME_TEXTURES * sizeof(void *))          \
+          : 0u) +                                                                   \
      (((flags) & ZS_CFG_ABUFFER) ? ZS_ABUFFER_BYTES(w, h, max_tris, max_edges) : 0u) + \
      ZS_ARENA_ALIGN)
 
@@ -306,7 +322,51 @@ typedef struct zs_mesh {
     uint16_t vertex_count;
     uint16_t triangle_count;
     zs_color color;                 /* used when no colour array is given */
+    /* Texture mapping (needs ZS_CFG_TEXTURE; both NULL: untextured). */
+    const int16_t *uvs;             /* 2 per vertex (u, v), ZS_UV_ONE == 1.0 */
+    const struct zs_texture *texture; /* modulated by the lit colour, then fogged */
 } zs_mesh;
+
+/* ------------------------------------------------------------------ */
+/* Textures                                                             */
+/* ------------------------------------------------------------------ */
+
+/* Texture coordinates in zs_mesh.uvs: Q3.12, so one texture spans 4096 and
+ * a triangle may repeat it up to 8 times either way (with ZS_TEX_WRAP). u
+ * runs along a texel row (x), v down the rows: texel (i, j) covers
+ * u in [i, i + 1) * ZS_UV_ONE / width, v likewise (OpenGL's convention with
+ * row 0 first). */
+#define ZS_UV_ONE 4096
+#define ZS_TEX_MAX_DIM 1024 /* width and height limit, texels */
+
+typedef enum zs_tex_format {
+    ZS_TEX_RGB565 = 0, /* uint16_t per texel, native RGB565 */
+    ZS_TEX_PAL8 = 1    /* uint8_t per texel, an index into 256 RGB565 colours */
+} zs_tex_format;
+
+/* zs_texture.flags */
+#define ZS_TEX_BILINEAR 0x01u /* bilinear filtering (else nearest texel) */
+#define ZS_TEX_CLAMP 0x02u    /* clamp to the edge texels (else repeat) */
+#define ZS_TEX_SUBDIV 0x04u   /* perspective exact every 16 columns (at multiples
+                                 of 16) and affine between (else exact at every
+                                 pixel); README: Texture mapping */
+
+/* A texture in flash: width x height texels, row-major, row 0 first. */
+typedef struct zs_texture {
+    const void *texels;       /* width * height texels of `format` */
+    const uint16_t *palette;  /* ZS_TEX_PAL8: 256 RGB565 colours (else unused) */
+    uint16_t width, height;   /* powers of two, 1..ZS_TEX_MAX_DIM */
+    uint8_t format;           /* zs_tex_format */
+    uint8_t flags;            /* ZS_TEX_* */
+} zs_texture;
+
+/* ZS_OK if t is a texture zs_draw accepts; ZS_ERR_TEXTURE for a width or
+ * height that is not a power of two in 1..ZS_TEX_MAX_DIM, no texels (or no
+ * palette for ZS_TEX_PAL8), an unknown format or unknown flags; ZS_ERR_NULL
+ * for t NULL. zs_draw also says ZS_ERR_TEXTURE for a mesh with uvs but no
+ * texture or a texture but no uvs, and ZS_ERR_MODE when the config left
+ * ZS_CFG_TEXTURE out. */
+zs_status zs_texture_check(const zs_texture *t);
 
 /* ------------------------------------------------------------------ */
 /* Shading                                                              */
@@ -511,6 +571,13 @@ typedef struct zs_renderer_private {
                                          rendered) so the mesh around them is known */
     int32_t crease_cos;               /* cos of the crease angle, Q28 */
     int64_t line_depth_a;             /* far / (far - near), Q30: 1/w ~ A - depth */
+    /* ZS_CFG_TEXTURE (texture.c); NULL without it */
+    struct zs_tex_vert *tex_verts;    /* per vertex: u, v, texture slot */
+    struct zs_active_tex *atex;       /* per active triangle: texture planes */
+    const struct zs_texture **textures; /* the frame's textures, slot k at k - 1 */
+    int64_t tex_depth_a;              /* far / (far - near), Q30 (1/w ~ A - depth) */
+    uint8_t n_textures;               /* slots used this frame */
+    uint32_t tex_serial;              /* frames begun (texture planes' freshness) */
     zs_setup_hook_fn setup_hook;
     void *setup_hook_user;
     /* A-buffer (abuffer.c) */

@@ -368,7 +368,7 @@ static void test_api(void **state)
              "vertex");
     ZT_CHECK(ZS_ARENA_BYTES_CFG(W, H, 400, 1200, 400, ZS_CFG_LINES) == zs_arena_bytes(&cfg),
              "macro == run time");
-    cfg.flags = 0x10;
+    cfg.flags = 0x8000;
     ZT_CHECK(zs_arena_bytes(&cfg) == 0, "unknown flag");
 
     ZT_CHECK(zs_format_bytes(ZS_FMT_MONO_PAGE) == 0 && zs_format_bytes(ZS_FMT_MONO_MSB) == 0,

@@ -152,6 +152,12 @@ static const code_spec k_specs[] = {
       {"zspan", {"zspan/portal.h"}},
       {"portal", {"zspan/portal.h"}},
       {"h", {"zspan/portal.h"}}}},
+    {ZS_ERR_TEXTURE,
+     "ZS_ERR_TEXTURE",
+     {{"bad", {"bad"}},
+      {"texture", {"texture"}},
+      {"see", {"see zs_texture_check"}},
+      {"zs_texture_check", {"zs_texture_check"}}}},
 };
 
 /* Words of a header comment that carry no meaning of their own. */

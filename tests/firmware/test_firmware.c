@@ -62,13 +62,15 @@ static void run(output *o, const char *cmd)
     o->status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }
 
-/* Finds "R <board> sphere285 <mode> 0 ... sum=XXXXXXXX" and returns the sum. */
+/* Finds "R <board> <scene> <mode> 0 ... sum=XXXXXXXX" and returns the sum
+ * (scene: sphere285, or textured for the tex-* outputs). */
 static int find_sum(const char *text, const char *board, const char *mode, unsigned long *sum,
                     unsigned long *instr, unsigned long *dropped)
 {
     char prefix[96];
     const char *p;
-    snprintf(prefix, sizeof prefix, "R %s sphere285 %s 0 ", board, mode);
+    snprintf(prefix, sizeof prefix, "R %s %s %s 0 ", board,
+             strncmp(mode, "tex-", 4) ? "sphere285" : "textured", mode);
     p = strstr(text, prefix);
     if (!p)
         return 0;
@@ -90,10 +92,12 @@ static int find_sum(const char *text, const char *board, const char *mode, unsig
     return 1;
 }
 
-/* span, zline, then the 1-bit outputs of bench_mono_frame */
-#define N_OUTPUTS 5
-static const char *const outputs[N_OUTPUTS] = {"span", "zline", "mono-bayer", "mono-diffuse",
-                                               "mono-lines"};
+/* span, zline, the 1-bit outputs of bench_mono_frame, the textured frames
+ * of bench_tex_frame */
+#define N_OUTPUTS 11
+static const char *const outputs[N_OUTPUTS] = {
+    "span", "zline", "mono-bayer", "mono-diffuse", "mono-lines", "tex-plain", "tex-nearest",
+    "tex-nearest-zline", "tex-subdiv", "tex-bilinear", "tex-lit-fog"};
 static unsigned long host_sum[N_OUTPUTS];
 
 static int host_setup(void **state)
@@ -113,6 +117,12 @@ static int host_setup(void **state)
                 fprintf(stderr, "no host %s checksum in:\n%s\n", outputs[m], o.text);
                 return -1;
             }
+    }
+    /* the textured frame is the same in both modes, and textured at all */
+    if (host_sum[6] != host_sum[7] || host_sum[5] == host_sum[6]) {
+        fprintf(stderr, "host textured checksums: plain %08lx nearest %08lx zline %08lx\n",
+                host_sum[5], host_sum[6], host_sum[7]);
+        return -1;
     }
     return 0;
 }

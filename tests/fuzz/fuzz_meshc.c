@@ -319,7 +319,7 @@ static void check_output(const char *cpath, const char *name, unsigned long max_
         for (size_t i = 0; i < fc.n; i++) fc32[i] = (zs_color)fc.v[i];
         for (size_t i = 0; i < vc.n; i++) vc32[i] = (zs_color)vc.v[i];
         zs_mesh m = {p16, i16, fc32, vc32, fn16, vn16, (zs_fixed)scale, (uint16_t)nv,
-                     (uint16_t)nt, (zs_color)color};
+                     (uint16_t)nt, (zs_color)color, NULL, NULL};
         static uint8_t arena[ZS_ARENA_BYTES(32, 32, 4096, 4096, 64)];
         zs_config cfg = zs_config_default(32, 32, 4096, 4096, 64);
         zs_renderer r;

@@ -109,7 +109,8 @@ void setup()
 
 void loop()
 {
-    zs_mesh cube = {cube_pos, cube_idx, NULL, cube_colors, NULL, NULL, ZS_FX_RATIO(6, 10), 8, 12, 0};
+    zs_mesh cube = {cube_pos, cube_idx, NULL, cube_colors, NULL, NULL, ZS_FX_RATIO(6, 10), 8, 12, 0,
+                    NULL, NULL};
     zs_shade_params look = zs_shade_default();
     look.shading = ZS_SHADE_GOURAUD;
     look.format = lcd.format;

@@ -83,9 +83,9 @@ void loop()
     static const uint8_t bayer[4][4] = {{0, 8, 2, 10}, {12, 4, 14, 6}, {3, 11, 1, 9}, {15, 7, 13, 5}};
     static const uint8_t whole_screen[] = {0x21, 0, W - 1, 0x22, 0, H / 8 - 1};
     zs_mesh cube = {cube_pos, cube_idx, NULL, NULL, NULL, NULL, ZS_FX_RATIO(6, 10), 8, 12,
-                    ZS_RGB(230, 230, 230)};
+                    ZS_RGB(230, 230, 230), NULL, NULL};
     zs_mesh pyr = {pyr_pos, pyr_idx, NULL, NULL, NULL, NULL, ZS_FX_RATIO(7, 10), 5, 6,
-                   ZS_RGB(200, 200, 200)};
+                   ZS_RGB(200, 200, 200), NULL, NULL};
     zs_shade_params look = zs_shade_default();
     look.format = ZS_FMT_GRAY8;
     look.ambient = ZS_FX_RATIO(2, 10);

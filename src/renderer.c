@@ -153,7 +153,9 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
             r->priv.mono_grey = carve(&cur, cfg->width);
         r->priv.line_ids[0] = carve(&cur, (size_t)cfg->width * 2u);
         r->priv.line_ids[1] = carve(&cur, (size_t)cfg->width * 2u);
-        r->priv.line_pending = carve(&cur, cfg->width);
+        /* the diffusion line is idle in a hidden-line frame */
+        r->priv.line_pending =
+            r->priv.mono_err ? (uint8_t *)r->priv.mono_err : carve(&cur, cfg->width);
         r->priv.tri_normal = carve(&cur, (size_t)cfg->max_triangles * ZS_TRI_NORMAL_BYTES);
         r->priv.draw_starts = carve(&cur, ((size_t)cfg->max_triangles + 7u) / 8u);
         r->priv.line_next_rec = carve(&cur, (size_t)cfg->max_triangles * 6u);

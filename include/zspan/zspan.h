@@ -150,7 +150,7 @@ const char *zs_strerror(zs_status status);
                                     and one line of diffusion error, 3 B per column */
 #define ZS_CFG_LINES 0x08u       /* hidden-line drawing (ZS_MONO_LINES): two lines of
                                     triangle ids and two flag lines (6 B per column,
-                                    1 B shared with ZS_CFG_MONO), a normal, three
+                                    4 B with ZS_CFG_MONO, whose lines it shares), a normal, three
                                     links and a draw-start bit per triangle record
                                     (14 B + 1 bit) and a link per vertex (2 B) */
 #define ZS_CFG_TEXTURE 0x10u     /* texture mapping (zs_mesh.uvs, zs_mesh.texture):
@@ -187,7 +187,7 @@ const char *zs_strerror(zs_status status);
  * Per pool: vertices 8 B (+4 B shade), triangle records 12 B, row buckets
  * 2 B per row, edges 32 B, active triangles 60 B (+36 B colour planes), the
  * z-buffer line 10 B per column; with ZS_CFG_MONO 3 B per column, with
- * ZS_CFG_LINES 6 B per column (5 with ZS_CFG_MONO too), 14 B and 1 bit
+ * ZS_CFG_LINES 6 B per column (4 with ZS_CFG_MONO too), 14 B and 1 bit
  * per triangle record and 2 B per vertex. */
 #define ZS_ARENA_BYTES_CFG(w, h, max_tris, max_verts, max_edges, flags)            \
     (ZS_ROUND8_((size_t)(max_verts) * ZS_VERTEX_BYTES) +                            \
@@ -207,7 +207,8 @@ const char *zs_strerror(zs_status status);
                                   : ZS_ROUND8_((size_t)(w) * 8u) + ZS_ROUND8_((size_t)(w) * 2u)) + \
      (((flags) & (ZS_CFG_MONO | ZS_CFG_LINES)) ? ZS_ROUND8_((size_t)(w)) : 0u) +      \
      (((flags) & ZS_CFG_MONO) ? ZS_ROUND8_((size_t)(w) * 2u) : 0u) +                \
-     (((flags) & ZS_CFG_LINES) ? 2u * ZS_ROUND8_((size_t)(w) * 2u) + ZS_ROUND8_((size_t)(w)) + \
+     (((flags) & ZS_CFG_LINES) ? 2u * ZS_ROUND8_((size_t)(w) * 2u) +                 \
+                                     (((flags) & ZS_CFG_MONO) ? 0u : ZS_ROUND8_((size_t)(w))) + \
                                      ZS_ROUND8_((size_t)(max_tris) * ZS_TRI_NORMAL_BYTES) + \
                                      ZS_ROUND8_(((size_t)(max_tris) + 7u) / 8u) +   \
                                      ZS_ROUND8_((size_t)(max_tris) * 6u) +          \

@@ -237,26 +237,59 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
         short_edge = new_edge(r, ai, !long_left, s[0], s[1], y);
     else
         short_edge = new_edge(r, ai, !long_left, s[1], s[2], y);
-    zs_recip_init(&area2, cross);
-    /* the depth plane from the canonical order: equal triangles, equal planes */
-    depth_plane(a, s, &area2, zs_asr32(s[0]->x, 4), zs_asr32(s[0]->y, 4), y);
-    if (a->flags & ZS_ACT_STEEP) {
-        r->priv.steep = 1;
-        zs_anchor_depth(r, a,
-                        zs_clampi(r->priv.edges[long_left ? long_edge : short_edge].x,
-                                  0, r->cfg.width),
-                        y);
+    a->y0 = (int16_t)y;
+    if (r->priv.mode == ZS_MODE_SPAN) {
+        /* the span walk makes the plane if it ever evaluates one */
+        a->flags |= ZS_ACT_LAZY;
+    } else {
+        zs_recip_init(&area2, cross);
+        /* the depth plane from the canonical order: equal triangles, equal planes */
+        depth_plane(a, s, &area2, zs_asr32(s[0]->x, 4), zs_asr32(s[0]->y, 4), y);
+        if (a->flags & ZS_ACT_STEEP) {
+            r->priv.steep = 1;
+            zs_anchor_depth(r, a,
+                            zs_clampi(r->priv.edges[long_left ? long_edge : short_edge].x,
+                                      0, r->cfg.width),
+                            y);
+        }
     }
     /* colours in submission order (per-vertex shades follow t->v); the
-     * record's area is negative in that order (a front face) */
+     * record's area is negative in that order (a front face). Only colour
+     * planes need the area's reciprocal here in span mode. */
     v[0] = &pool[t->v[0]];
     v[1] = &pool[t->v[1]];
     v[2] = &pool[t->v[2]];
+    if ((a->flags & ZS_ACT_LAZY) && (t->color >> 24) != 0 && r->priv.vshade)
+        zs_recip_init(&area2, cross);
     area2.neg = 1;
     zs_shade_setup(r, a, r->priv.acolor ? &r->priv.acolor[ai] : 0, t, v,
                    zs_asr32(v[0]->x, 4), zs_asr32(v[0]->y, 4), &area2, y);
     r->stats.tris_drawn++;
     return 1;
+}
+
+void zs_make_plane(zs_renderer *r, zs_active *a, int32_t y)
+{
+    const zs_vert *s[3];
+    zs_recip area2;
+    sort_canonical(r, &r->priv.tris[a->tri], s);
+    zs_recip_init(&area2, zs_area2_inline(s[0], s[1], s[2]));
+    depth_plane(a, s, &area2, zs_asr32(s[0]->x, 4), zs_asr32(s[0]->y, 4), a->y0);
+    a->flags &= (uint8_t)~ZS_ACT_LAZY;
+    if (a->flags & ZS_ACT_STEEP) {
+        /* anchored on this row at its left edge, as every row is from here
+         * on (found in the list: needles are rare) */
+        const uint16_t ai = (uint16_t)(a - r->priv.active);
+        int i;
+        r->priv.steep = 1;
+        for (i = 0; i < r->priv.n_ael; i++) {
+            const zs_edge *e = &r->priv.edges[r->priv.ael[i]];
+            if (e->lead == ai) {
+                zs_anchor_depth(r, a, zs_clampi(e->x, 0, r->cfg.width), y);
+                break;
+            }
+        }
+    }
 }
 
 void zs_continue_edge(zs_renderer *r, uint16_t ai, int32_t y)

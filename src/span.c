@@ -25,8 +25,10 @@
  * store to a record). The out-of-line helpers below get what they need as
  * arguments and pass the nearest crossing back through r->priv.min_cross. */
 
-static int64_t depth_at(const zs_active *a, int32_t x, int32_t y)
+static int64_t depth_at(zs_renderer *r, zs_active *a, int32_t x, int32_t y)
 {
+    if (a->flags & ZS_ACT_LAZY)
+        zs_make_plane(r, a, y);
     return zs_row_depth(a, y) + zs_mul64_small(a->zdx, x);
 }
 
@@ -146,7 +148,7 @@ static ZS_NOINLINE zs_active *retop(const walk_ctx *w, int ns, int32_t x)
     }
     for (k = 0; k < ns; k++) {
         zs_active *a = &act[set[k]];
-        a->zcur = depth_at(a, x, y);
+        a->zcur = depth_at(r, a, x, y);
         if (!best || nearer(a->zcur, a, bz, best)) {
             best = a;
             bz = a->zcur;
@@ -199,16 +201,42 @@ static ZS_NOINLINE int32_t next_cross(const zs_renderer *r, int ns, const zs_act
 
 /* An entering triangle a at column x against the top (both in the set):
  * its crossing with the top, or 1 when it may be the new top (pick again). */
-static ZS_NOINLINE int enter_vs_top(const walk_ctx *w, zs_active *a, const zs_active *top,
+static ZS_NOINLINE int enter_vs_top(const walk_ctx *w, zs_active *a, zs_active *top,
                                     int32_t x)
 {
-    int64_t za = depth_at(a, x, w->y), zt = depth_at(top, x, w->y);
+    int64_t za = depth_at(w->r, a, x, w->y), zt = depth_at(w->r, top, x, w->y);
     w->r->stats.depth_evals += 2;
     if (nearer(za, a, zt, top))
         return 1;
     a->cross = overtake(w->r, a, top, x, za, zt);
     return 0;
 }
+
+/* An edge's lead or trail as a signed value: ZS_NONE (all ones) reads as -1
+ * through int16_t (exact-width, two's complement; it may alias uint16_t),
+ * and indices stay below 2^15: one signed load and a sign test. */
+static inline int32_t edge_side(const uint16_t *f)
+{
+    return *(const int16_t *)(const void *)f;
+}
+
+/* An entering member b against a top that stays in the set: behind it
+ * wherever both are (no crossing either), a new top (every member's crossing
+ * changes: pick again), or behind it with a crossing to keep. */
+#define b_vs_top(b)                                                                        \
+    do {                                                                                   \
+        if (always_nearer(top, (b))) {                                                     \
+            if ((b)->zlo < others_lo)                                                      \
+                others_lo = (b)->zlo;                                                      \
+        } else if (always_nearer((b), top) || enter_vs_top(&w, (b), top, cur)) {          \
+            top = 0;                                                                       \
+        } else {                                                                           \
+            if ((b)->cross < min_cross)                                                    \
+                min_cross = (b)->cross;                                                    \
+            if ((b)->zlo < others_lo)                                                      \
+                others_lo = (b)->zlo;                                                      \
+        }                                                                                  \
+    } while (0)
 
 void zs_span_row(zs_renderer *r, int y, uint8_t *row)
 {
@@ -233,7 +261,7 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
     for (;;) {
         const zs_edge *e = 0;
         int32_t x = width;
-        uint16_t t;
+        int32_t t, l; /* the edge's triangles, < 0 for none */
         int handover; /* the top left at this edge with no crossing pending */
         if (p != end) {
             e = &edges[*p++];
@@ -244,39 +272,76 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
         if (x > cur) {
             if (x > width)
                 x = width;
-            if (!top && ns > 0) {
-                top = retop(&w, ns, cur);
-                min_cross = r->priv.min_cross;
-                others_lo = r->priv.others_lo;
-            }
-            for (;;) {
-                if (top != pend_top) { /* spans of one surface merge */
-                    if (cur > pend_x0)
-                        put_span(&w, pend_top, pend_x0, cur);
-                    pend_top = top;
-                    pend_x0 = cur;
+            if (top ? min_cross < x : ns > 0) {
+                /* a pick is due, or a member overtakes the top before x */
+                if (!top) {
+                    top = retop(&w, ns, cur);
+                    min_cross = r->priv.min_cross;
+                    others_lo = r->priv.others_lo;
                 }
-                if (!top || min_cross >= x)
-                    break;
-                cur = min_cross; /* a member overtakes the top: split */
-                r->stats.crossings++;
-                top = retop(&w, ns, cur);
-                min_cross = r->priv.min_cross;
-                others_lo = r->priv.others_lo;
+                for (;;) {
+                    if (top != pend_top) { /* spans of one surface merge */
+                        if (cur > pend_x0)
+                            put_span(&w, pend_top, pend_x0, cur);
+                        pend_top = top;
+                        pend_x0 = cur;
+                    }
+                    if (min_cross >= x)
+                        break;
+                    cur = min_cross; /* split */
+                    r->stats.crossings++;
+                    top = retop(&w, ns, cur);
+                    min_cross = r->priv.min_cross;
+                    others_lo = r->priv.others_lo;
+                }
+            } else if (top != pend_top) { /* spans of one surface merge */
+                if (cur > pend_x0)
+                    put_span(&w, pend_top, pend_x0, cur);
+                pend_top = top;
+                pend_x0 = cur;
             }
             cur = x;
         }
         if (!e)
             break;
-        /* in/out counters: a span inverted by rounding is never entered */
+        /* in/out counters: a span inverted by rounding is never entered
+         * (they count modulo 256: entering is 0 -> 1, leaving 1 -> 0) */
         handover = 0;
-        t = e->trail;
-        if (t != ZS_NONE) {
+        t = edge_side(&e->trail);
+        l = edge_side(&e->lead);
+        if (t >= 0) {
             zs_active *a = &act[t];
-            if (a->inside-- == 1) { /* leaves the set */
-                uint16_t last = set[--ns], pos = a->set_pos;
-                set[pos] = last;
-                act[last].set_pos = pos;
+            uint8_t was = a->inside;
+            a->inside = (uint8_t)(was - 1u);
+            if (was == 1u) { /* leaves the set */
+                uint16_t pos = a->set_pos;
+                if (l >= 0 && act[l].inside == 0u) {
+                    /* a shared edge: the entering neighbour takes the slot */
+                    zs_active *b = &act[l];
+                    b->inside = 1u;
+                    b->set_pos = pos;
+                    set[pos] = (uint16_t)l;
+                    b->cross = NO_CROSS;
+                    if (ns == 1) { /* the only member */
+                        top = b;
+                        min_cross = NO_CROSS;
+                        others_lo = 0xFFFFu;
+                    } else if (a == top) {
+                        top = 0;
+                        if (min_cross == NO_CROSS && b->zhi <= others_lo)
+                            top = b; /* nearer than every other member */
+                    } else if (top) {
+                        if (a->cross == min_cross && min_cross != NO_CROSS)
+                            min_cross = next_cross(r, ns, top);
+                        b_vs_top(b);
+                    }
+                    continue;
+                }
+                {
+                    uint16_t last = set[--ns];
+                    set[pos] = last;
+                    act[last].set_pos = pos;
+                }
                 if (a == top) {
                     /* nothing overtakes it: every member's crossing is none */
                     handover = min_cross == NO_CROSS;
@@ -285,12 +350,13 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
                     min_cross = next_cross(r, ns, top);
             }
         }
-        t = e->lead;
-        if (t != ZS_NONE) {
-            zs_active *a = &act[t];
-            if (++a->inside == 1) { /* enters the set */
+        if (l >= 0) {
+            zs_active *a = &act[l];
+            uint8_t was = a->inside;
+            a->inside = (uint8_t)(was + 1u);
+            if (was == 0u) { /* enters the set */
                 a->set_pos = (uint16_t)ns;
-                set[ns++] = t;
+                set[ns++] = (uint16_t)l;
                 a->cross = NO_CROSS;
                 if (!top) {
                     if (ns == 1) { /* the only member */
@@ -302,17 +368,9 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
                          * nearer than every other member wherever they meet */
                         top = a;
                     } /* else the pick after this column's events includes it */
-                } else if (always_nearer(top, a)) {
-                    /* behind the top wherever both are: no crossing either */
-                    if (a->zlo < others_lo)
-                        others_lo = a->zlo;
-                } else if (always_nearer(a, top) || enter_vs_top(&w, a, top, cur)) {
-                    top = 0; /* a new top: every member's crossing changes */
                 } else {
-                    if (a->cross < min_cross)
-                        min_cross = a->cross;
-                    if (a->zlo < others_lo)
-                        others_lo = a->zlo;
+                    zs_active *b = a;
+                    b_vs_top(b);
                 }
             }
         }

@@ -67,7 +67,7 @@ typedef struct zs_active {
     uint16_t right;        /* its right (trailing) edge */
     int16_t y0;            /* the row zrow and the colour planes refer to */
     uint8_t flags;         /* ZS_ACT_* */
-    int8_t inside;         /* in/out counter while walking a row */
+    uint8_t inside;        /* in/out counter while walking a row (mod 256) */
     uint16_t set_pos;      /* position in the in-polygon set */
     int16_t y_end;         /* first row below the triangle */
     int32_t cross;         /* span walk: column where it overtakes the top */
@@ -86,6 +86,9 @@ typedef struct zs_active_color {
 #define ZS_ACT_GOURAUD 0x01u   /* colour varies across the triangle */
 #define ZS_ACT_LONG_LEFT 0x02u /* the long edge is its left edge */
 #define ZS_ACT_STEEP 0x04u     /* needle: zrow anchored exactly on every row */
+#define ZS_ACT_LAZY 0x08u      /* span mode: depth plane not made yet (most
+                                  triangles are decided by their depth range
+                                  and never need it); zs_make_plane makes it */
 
 /* Compile-time checks that the header's sizes match the records. */
 typedef char zs_check_vert[(sizeof(zs_vert) == ZS_VERTEX_BYTES) ? 1 : -1];
@@ -205,6 +208,9 @@ int zs_activate(zs_renderer *r, uint16_t tri, int32_t y);
  * centre of column xa on row y when the triangle covers it (xa: its first
  * covered column there, clamped to the screen; 0 <= y <= height). */
 void zs_anchor_depth(const zs_renderer *r, zs_active *a, int32_t xa, int32_t y);
+/* The depth plane of a ZS_ACT_LAZY triangle, as activation would have made
+ * it, during row y's walk (a steep one is anchored on row y like the rest). */
+void zs_make_plane(zs_renderer *r, zs_active *a, int32_t y);
 /* Appends the lower short edge of active triangle ai, starting at row y. */
 void zs_continue_edge(zs_renderer *r, uint16_t ai, int32_t y);
 /* raster.c: rows, edges, the active edge list */
@@ -399,6 +405,47 @@ typedef uint16_t zs_half_alias __attribute__((may_alias));
 #define ZS_WORD_STORES 1
 #endif
 
+#ifdef ZS_WORD_STORES
+/* Words q[0 .. 4 * blocks - 1] = w for blocks >= 1; returns the word after
+ * them. On Thumb a store-multiple writes 16 bytes in one instruction: two of
+ * them per loop pass cost 4 instructions per 32 bytes, where single stores
+ * cost 7 per 16 (the background and long spans are most of a row's bytes). */
+#if defined(__thumb__)
+static inline zs_word_alias *zs_store_blocks(zs_word_alias *q, uint32_t blocks, uint32_t w)
+{
+    register uint32_t w0 __asm__("r2") = w;
+    register uint32_t w1 __asm__("r3") = w;
+    register uint32_t w2 __asm__("r4") = w;
+    register uint32_t w3 __asm__("r5") = w;
+    __asm__ volatile(".syntax unified\n"
+                     "    lsrs %1, %1, #1\n" /* pairs of blocks; C: one more */
+                     "    bcc 2f\n"
+                     "    stmia %0!, {%2, %3, %4, %5}\n"
+                     "2:  beq 3f\n" /* Z still from lsrs: no pair */
+                     "1:  stmia %0!, {%2, %3, %4, %5}\n"
+                     "    stmia %0!, {%2, %3, %4, %5}\n"
+                     "    subs %1, %1, #1\n"
+                     "    bne 1b\n"
+                     "3:\n"
+                     : "+l"(q), "+l"(blocks)
+                     : "l"(w0), "l"(w1), "l"(w2), "l"(w3)
+                     : "cc", "memory");
+    return q;
+}
+#else
+static inline zs_word_alias *zs_store_blocks(zs_word_alias *q, uint32_t blocks, uint32_t w)
+{
+    for (; blocks > 0; blocks--, q += 4) {
+        q[0] = w;
+        q[1] = w;
+        q[2] = w;
+        q[3] = w;
+    }
+    return q;
+}
+#endif
+#endif
+
 /* n pixels of 2 bytes from p; pair holds the pixel twice (its bytes in
  * memory are b0 b1 b0 b1, as zs_pixel_word packs 2-byte formats), so it is
  * stored as it is, a word or a half at a time. */
@@ -415,11 +462,9 @@ static inline void zs_fill2(uint8_t *p, int n, uint32_t pair)
             n--;
         }
         q = (zs_word_alias *)(void *)p;
-        for (; n >= 8; n -= 8, q += 4) {
-            q[0] = pair;
-            q[1] = pair;
-            q[2] = pair;
-            q[3] = pair;
+        if (n >= 8) {
+            q = zs_store_blocks(q, (uint32_t)n >> 3, pair);
+            n &= 7;
         }
         switch (n >> 1) { /* the rest: up to three words, then a half */
         case 3:

@@ -60,6 +60,29 @@ bad:
     return -1;
 }
 
+/* --opacity A1[,A2...]: 0..255 each, at most 16. */
+static int parse_opacity(const char *s, sim_render_opts *o)
+{
+    const char *p = s;
+    o->n_opacity = 0;
+    for (;;) {
+        char *end;
+        long v;
+        errno = 0;
+        v = strtol(p, &end, 10);
+        if (end == p || errno != 0 || v < 0 || v > 255 || o->n_opacity >= 16 ||
+            (*end != ',' && *end != '\0'))
+            break;
+        o->opacity[o->n_opacity++] = (uint8_t)v;
+        if (*end == '\0')
+            return 0;
+        p = end + 1;
+    }
+    fprintf(stderr, "zspan-sim: --opacity: expected up to 16 values 0..255 separated by commas, "
+                    "got '%s'\n", s);
+    return -1;
+}
+
 static int count_commas(const char *s)
 {
     int n = 0;
@@ -116,6 +139,10 @@ static int parse_args(int argc, char **argv, sim_render_opts *o)
         }
         if (strcmp(a, "--smooth") == 0) {
             o->smooth = 1;
+            continue;
+        }
+        if (strcmp(a, "--aa") == 0) {
+            o->aa = 1;
             continue;
         }
         if (strcmp(a, "--unlit") == 0) {
@@ -203,6 +230,9 @@ static int parse_args(int argc, char **argv, sim_render_opts *o)
             o->has_ambient = 1;
         } else if (OPT("--fog")) {
             if (m < 0 || parse_fog(v, o) != 0)
+                return SIM_EXIT_USAGE;
+        } else if (OPT("--opacity")) {
+            if (m < 0 || parse_opacity(v, o) != 0)
                 return SIM_EXIT_USAGE;
         } else if (OPT("--band")) {
             if (m < 0 || zs_opt_long(SIM_PROG, "--band", v, 1, ZS_MAX_DIM, &o->band) != 0)
@@ -619,6 +649,8 @@ int sim_cmd_render(int argc, char **argv)
     cfg = zs_app_config(o.width, o.height,
                         o.max_tris ? (unsigned long)o.max_tris : scene.total_tris * 3ul + 64u,
                         (unsigned long)o.max_verts, (unsigned long)o.max_edges);
+    if (o.aa || o.n_opacity)
+        cfg.flags |= ZS_CFG_ABUFFER;
     arena = zs_app_renderer(&r, &cfg, &arena_size, SIM_PROG);
     if (arena == NULL)
         goto done;
@@ -684,6 +716,13 @@ int sim_cmd_render(int argc, char **argv)
         rc = core_error("zs_frame_shading", st);
         goto done;
     }
+    if (o.aa || o.n_opacity) {
+        st = zs_frame_antialias(&r, o.n_opacity ? ZS_AA_TRANSPARENT : ZS_AA_EDGES);
+        if (st != ZS_OK) {
+            rc = core_error("zs_frame_antialias (--aa, --opacity)", st);
+            goto done;
+        }
+    }
 
     if (o.dump != NULL) {
         dump = fopen(o.dump, "w");
@@ -694,6 +733,13 @@ int sim_cmd_render(int argc, char **argv)
         zs_set_setup_hook(&r, dump_hook, dump);
     }
     for (i = 0; i < scene.count; i++) {
+        if (o.n_opacity) {
+            st = zs_draw_opacity(&r, o.opacity[i < (size_t)o.n_opacity ? i : (size_t)o.n_opacity - 1]);
+            if (st != ZS_OK) {
+                rc = core_error("zs_draw_opacity", st);
+                goto done;
+            }
+        }
         st = zs_draw(&r, &scene.chunks[i].mesh, model_ptr);
         if (st != ZS_OK) {
             rc = core_error("zs_draw", st);
@@ -744,6 +790,12 @@ int sim_cmd_render(int argc, char **argv)
                    o.shade == SHADE_IDS ? "ids" : o.shade == SHADE_GOURAUD ? "gouraud" : "flat",
                    (unsigned long)sim_fnv1a(img, stride * (size_t)o.height));
             sim_print_stats(stdout, s);
+            if (o.aa || o.n_opacity)
+                printf("  a-buffer: %lu pixels resolved from %lu fragments (at most %lu), %lu "
+                       "left aliased (pool full), %lu triangles left out\n",
+                       (unsigned long)s->aa_pixels, (unsigned long)s->aa_fragments,
+                       (unsigned long)s->aa_max_fragments, (unsigned long)s->aa_overflow,
+                       (unsigned long)s->aa_skipped);
         }
         if (s->tris_dropped || s->verts_dropped || s->records_skipped)
             fprintf(stderr,

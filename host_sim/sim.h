@@ -75,6 +75,9 @@ typedef struct sim_render_opts {
     zs_color fog_color;
     long band;
     long max_tris, max_verts, max_edges;
+    int aa;               /* --aa: anti-aliased edges (the A-buffer) */
+    int n_opacity;        /* --opacity A1,A2,...: per draw in file order (the last repeats) */
+    uint8_t opacity[16];
     int quiet;
     int done;             /* --help or --version was answered */
     /* Checked conversions of the camera options. */

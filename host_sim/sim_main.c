@@ -38,7 +38,11 @@ void sim_print_demo_usage(FILE *f)
           "  --shade flat|gouraud  shading (default gouraud)\n"
           "  --size WxH            image size (default 240x240)\n"
           "  --frame N             camera orbit frame, 3 degrees each (default 0)\n"
-          "  --band N              rows per zs_render_frame band (default 1)\n"
+          "  --aa                  anti-aliased edges: 4x4 sub-samples where edges and\n"
+        "                        penetrations cross (the A-buffer; span mode only)\n"
+        "  --opacity A1[,A2...]  opacity 0..255 of each mesh in file order (the last\n"
+        "                        repeats); blended in depth order, with --aa's edges\n"
+        "  --band N              rows per zs_render_frame band (default 1)\n"
           "  --no-compare          do not also render the other mode and compare\n"
           "  --help, --version\n",
           f);
@@ -89,6 +93,10 @@ void sim_print_render_usage(FILE *f)
         "  --ambient A           ambient term (default 0.3)\n"
         "  --unlit               colours as they are (ambient 1, no light)\n"
         "  --fog start,end,RRGGBB  distance fog\n"
+        "  --aa                  anti-aliased edges: 4x4 sub-samples where edges and\n"
+        "                        penetrations cross (the A-buffer; span mode only)\n"
+        "  --opacity A1[,A2...]  opacity 0..255 of each mesh in file order (the last\n"
+        "                        repeats); blended in depth order, with --aa's edges\n"
         "  --band N              rows per zs_render_frame band (default 1)\n"
         "  --max-tris N --max-verts N --max-edges N\n"
         "                        pool capacities (default: from the triangle count)\n"

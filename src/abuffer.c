@@ -44,13 +44,16 @@ typedef struct zs_aa_tri {
     int16_t sl[4], sr[4];           /* this row's sub-sample columns [sl, sr) per sub-row */
     int16_t lo, hi;                 /* pixel columns the triangle touches on this row */
     int16_t flo, fhi;               /* pixel columns it covers wholly (all 16 samples) */
+    uint16_t v[3];                  /* its vertices (mesh neighbours share two) */
+    int64_t zrow;                   /* this row: depth at the centre of column 0 */
+    int64_t reach;                  /* how far depth strays from a centre's over the samples */
     uint16_t zlo, zhi;              /* vertex depth range, Q30 >> 15 (rounded outward) */
 } zs_aa_tri;
 
 /* A fragment: an open triangle's part of one pixel. */
 typedef struct zs_aa_pix {
     const zs_aa_tri *t;
-    int64_t z, zx, zy; /* depth at the centre, per 1/16 px */
+    int64_t z;         /* depth at the centre */
     int32_t c[3];      /* colour Q8.16 at the centre */
     uint16_t mask;     /* sub-sample (i, j) in bit 4j + i */
     uint16_t won;      /* the samples it shows */
@@ -67,6 +70,7 @@ typedef struct zs_aa_state {
     uint32_t *runs;       /* opacity runs: first record << 8 | opacity */
     uint16_t *order;      /* open slots by first column (the crossing sweep) */
     uint16_t n_open, cap_open, n_runs;
+    int16_t next_row;     /* the next row to resolve or step */
     uint8_t opacity;      /* for the draws that follow */
     uint8_t any_alpha;    /* a transparent record is open on this row */
 } zs_aa_state;
@@ -160,8 +164,12 @@ static void open_tri(zs_renderer *r, zs_aa_state *s, uint16_t rec, int32_t Y)
     det = zs_area2(v0, v1, v2);
     if (det == 0)
         return;
+    s->order[s->n_open] = s->n_open; /* sorted into place on the row */
     a = &s->open[s->n_open++];
     a->rec = rec;
+    a->v[0] = t->v[0];
+    a->v[1] = t->v[1];
+    a->v[2] = t->v[2];
     a->alpha = s->alpha[rec];
     a->long_left = det > 0;
     a->lower = 0;
@@ -170,7 +178,9 @@ static void open_tri(zs_renderer *r, zs_aa_state *s, uint16_t rec, int32_t Y)
     a->ybot = v2->y;
     a->ycur = Y;
     edge_init(a->long_left ? &a->left : &a->right, v0, v2, Y);
-    if (v0->y == v1->y) { /* flat top: the short edge is the lower one at once */
+    if (v0->y == v1->y || (Y >= v1->y && v1->y < v2->y)) {
+        /* flat top, or the middle vertex above this row: the lower short edge at once
+         * (the upper one, extrapolated this far, could leave the int32 range) */
         edge_init(a->long_left ? &a->right : &a->left, v1, v2, Y);
         a->lower = 1;
     } else {
@@ -236,6 +246,13 @@ static void advance(const zs_renderer *r, zs_aa_tri *a, int32_t Y)
     }
 }
 
+/* How far the depth strays from the pixel centre's over the sub-samples. */
+static int64_t depth_reach(const zs_aa_tri *a)
+{
+    int64_t gx = a->zdx < 0 ? -a->zdx : a->zdx, gy = a->zdy < 0 ? -a->zdy : a->zdy;
+    return zs_asr64(6 * (gx + gy), 4) + CROSS_SLACK;
+}
+
 static void mark_range(zs_aa_state *s, int32_t lo, int32_t hi)
 {
     for (; lo < hi; lo++)
@@ -293,6 +310,8 @@ static void row_coverage(const zs_renderer *r, zs_aa_state *s, zs_aa_tri *a, int
     a->fhi = (int16_t)fhi;
     if (lo >= hi)
         return;
+    a->zrow = a->z0 + zs_mul64_small(a->zdy, y - a->oy) - zs_mul64_small(a->zdx, a->ox);
+    a->reach = depth_reach(a);
     if (!full || flo >= fhi || a->alpha != 255) {
         mark_range(s, lo, hi);
     } else {
@@ -302,16 +321,20 @@ static void row_coverage(const zs_renderer *r, zs_aa_state *s, zs_aa_tri *a, int
 }
 
 /* Depth difference of a and b at the centre of column c of row y. */
-static int64_t depth_at(const zs_aa_tri *a, int32_t c, int32_t y)
+static int64_t depth_at(const zs_aa_tri *a, int32_t c)
 {
-    return a->z0 + zs_mul64_small(a->zdx, c - a->ox) + zs_mul64_small(a->zdy, y - a->oy);
+    return a->zrow + zs_mul64_small(a->zdx, c);
 }
 
-/* How far the depth strays from the pixel centre's over the sub-samples. */
-static int64_t depth_reach(const zs_aa_tri *a)
+/* Two front faces of a mesh that share an edge lie on its two sides: they
+ * meet only on it, and its pixels are marked already. */
+static int share_edge(const zs_aa_tri *a, const zs_aa_tri *b)
 {
-    int64_t gx = a->zdx < 0 ? -a->zdx : a->zdx, gy = a->zdy < 0 ? -a->zdy : a->zdy;
-    return zs_asr64(6 * (gx + gy), 4) + CROSS_SLACK;
+    int n = 0, i, j;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++)
+            n += a->v[i] == b->v[j];
+    return n >= 2;
 }
 
 /* Marks the pixels of row y where the planes of a and b may cross, within
@@ -321,12 +344,13 @@ static void mark_crossing(zs_aa_state *s, const zs_aa_tri *a, const zs_aa_tri *b
 {
     int32_t lo = a->lo > b->lo ? a->lo : b->lo, hi = a->hi < b->hi ? a->hi : b->hi;
     int64_t d0, d1, gx, gy, h, t0, t1;
-    if (lo >= hi || a->zhi <= b->zlo || b->zhi <= a->zlo)
+    if (lo >= hi || a->zhi <= b->zlo || b->zhi <= a->zlo || share_edge(a, b))
         return;
     gx = a->zdx - b->zdx;
     gy = a->zdy - b->zdy;
     h = ((gx < 0 ? -gx : gx) >> 1) + ((gy < 0 ? -gy : gy) >> 1) + CROSS_SLACK;
-    d0 = depth_at(a, lo, y) - depth_at(b, lo, y);
+    d0 = depth_at(a, lo) - depth_at(b, lo);
+    (void)y;
     d1 = d0 + gx * (hi - 1 - lo);
     if ((d0 > h && d1 > h) || (d0 < -h && d1 < -h))
         return; /* one sign all along */
@@ -358,9 +382,7 @@ static void mark_crossings(zs_aa_state *s, int32_t y)
 {
     uint16_t *o = s->order;
     int n = s->n_open, i, j;
-    for (i = 0; i < n; i++)
-        o[i] = (uint16_t)i;
-    for (i = 1; i < n; i++) {
+    for (i = 1; i < n; i++) { /* last row's order: little moves */
         uint16_t v = o[i];
         int16_t key = s->open[v].lo;
         for (j = i; j > 0 && s->open[o[j - 1]].lo > key; j--)
@@ -402,13 +424,28 @@ static int nearer_at(const zs_aa_pix *a, int64_t za, const zs_aa_pix *b, int64_t
 
 static int64_t sample_depth(const zs_aa_pix *f, int i, int j)
 {
-    return f->z + f->zx * sample_off(i) + f->zy * sample_off(j);
+    return f->z + zs_asr64(zs_mul64_small(f->t->zdx, sample_off(i)) +
+                               zs_mul64_small(f->t->zdy, sample_off(j)), 4);
 }
 
 static int32_t sample_channel(const zs_aa_pix *f, int k, int i, int j)
 {
     return f->c[k] + (int32_t)zs_asr64((int64_t)f->t->cdx[k] * sample_off(i) +
                                            (int64_t)f->t->cdy[k] * sample_off(j), 4);
+}
+
+/* Per 4-bit sub-row mask: samples set, sum of their column offsets. */
+static const uint8_t nibble_count[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+static const int8_t nibble_sx[16] = {0, -6, -2, -8, 2, -4, 0, -6, 6, 0, 4, -2, 8, 2, 6, 0};
+
+/* Drops the fragments wholly behind depth zfull (an opaque full cover). */
+static int drop_hidden(zs_aa_pix *px, int n, int64_t zfull)
+{
+    int i, k = 0;
+    for (i = 0; i < n; i++)
+        if (px[i].z - px[i].t->reach <= zfull)
+            px[k++] = px[i];
+    return k;
 }
 
 static uint32_t popcount16(uint32_t m)
@@ -474,50 +511,47 @@ static void resolve_pixel(zs_renderer *r, zs_aa_state *s, const uint16_t *across
     uint32_t bg = r->shade.background, rgb;
     for (i = 0; i < na; i++) {
         const zs_aa_tri *t = &s->open[across[i]];
-        if (t->alpha == 255 && c >= t->flo && c < t->fhi) {
-            int64_t z = depth_at(t, c, y) + depth_reach(t);
-            zfull = z < zfull ? z : zfull;
-        }
-    }
-    for (i = 0; i < na; i++) {
-        const zs_aa_tri *t = &s->open[across[i]];
-        zs_aa_pix *p;
         uint16_t m;
         int64_t z;
         if (t->alpha == 0)
             continue;
-        z = depth_at(t, c, y);
-        if (zfull != INT64_MAX && z - depth_reach(t) > zfull)
+        z = depth_at(t, c);
+        if (t->alpha == 255 && c >= t->flo && c < t->fhi && z + t->reach < zfull)
+            zfull = z + t->reach;
+        if (z - t->reach > zfull)
             continue; /* wholly behind an opaque fragment */
         m = pixel_mask(t, c);
         if (!m)
             continue;
+        if (n >= (int)ZS_ABUFFER_FRAGMENTS)
+            n = drop_hidden(px, n, zfull);
         if (n >= (int)ZS_ABUFFER_FRAGMENTS) {
             r->stats.aa_overflow++;
             return; /* capacity policy: more surfaces than the pool, the pixel stays aliased */
         }
-        p = &px[n];
-        p->t = t;
-        p->mask = m;
-        p->won = 0;
-        p->z = z;
-        p->zx = zs_asr64(t->zdx, 4);
-        p->zy = zs_asr64(t->zdy, 4);
+        px[n].t = t;
+        px[n].z = z;
+        px[n].mask = m;
+        px[n].won = 0;
+        n++;
+    }
+    n = drop_hidden(px, n, zfull);
+    for (i = 1; i < n; i++) { /* by centre depth */
+        zs_aa_pix p = px[i];
+        for (j = i; j > 0 && nearer_at(&p, p.z, &px[j - 1], px[j - 1].z); j--)
+            px[j] = px[j - 1];
+        px[j] = p;
+    }
+    for (i = 0; i < n; i++) {
+        const zs_aa_tri *t = px[i].t;
+        if (t->alpha != 255)
+            transparent = 1;
         for (k = 0; k < 3; k++) {
             int64_t v = (int64_t)t->c0[k] + (int64_t)t->cdx[k] * (c - t->ox) +
                         (int64_t)t->cdy[k] * (y - t->oy);
-            p->c[k] = (int32_t)(v > ((int64_t)1 << 30) ? ((int64_t)1 << 30)
-                                : v < -((int64_t)1 << 30) ? -((int64_t)1 << 30) : v);
+            px[i].c[k] = (int32_t)(v > ((int64_t)1 << 30) ? ((int64_t)1 << 30)
+                                   : v < -((int64_t)1 << 30) ? -((int64_t)1 << 30) : v);
         }
-        if (t->alpha != 255)
-            transparent = 1;
-        /* insertion by centre depth */
-        for (j = n; j > 0 && nearer_at(&px[j], px[j].z, &px[j - 1], px[j - 1].z); j--) {
-            zs_aa_pix tmp = px[j];
-            px[j] = px[j - 1];
-            px[j - 1] = tmp;
-        }
-        n++;
     }
     if ((uint32_t)n > r->stats.aa_max_fragments)
         r->stats.aa_max_fragments = (uint32_t)n;
@@ -525,13 +559,11 @@ static void resolve_pixel(zs_renderer *r, zs_aa_state *s, const uint16_t *across
     r->stats.aa_fragments += (uint32_t)n;
     /* do two fragments that share samples have overlapping depth ranges? */
     for (i = 0; i < n && !conflict; i++) {
-        int64_t hi = px[i].z + 6 * ((px[i].zx < 0 ? -px[i].zx : px[i].zx) +
-                                    (px[i].zy < 0 ? -px[i].zy : px[i].zy)) + CROSS_SLACK;
+        int64_t hi = px[i].z + px[i].t->reach;
         if (px[i].t->alpha != 255)
             continue;
         for (j = i + 1; j < n; j++) {
-            int64_t lo = px[j].z - 6 * ((px[j].zx < 0 ? -px[j].zx : px[j].zx) +
-                                        (px[j].zy < 0 ? -px[j].zy : px[j].zy)) - CROSS_SLACK;
+            int64_t lo = px[j].z - px[j].t->reach;
             if (px[j].t->alpha == 255 && (px[i].mask & px[j].mask) && lo <= hi) {
                 conflict = 1;
                 break;
@@ -602,15 +634,16 @@ static void resolve_pixel(zs_renderer *r, zs_aa_state *s, const uint16_t *across
         for (k = 0; k < 3; k++)
             acc[k] = (int64_t)nbg * 16 * (int64_t)(((bg >> (16 - 8 * k)) & 255u) << 16);
         for (i = 0; i < n; i++) {
-            uint32_t m = px[i].won, cnt = popcount16(m);
+            uint32_t m = px[i].won, cnt = 0;
             int64_t sx = 0, sy = 0;
             if (!m)
                 continue;
-            for (j = 0; j < 16; j++)
-                if (m & (1u << j)) {
-                    sx += sample_off(j & 3);
-                    sy += sample_off(j >> 2);
-                }
+            for (j = 0; j < 4; j++) { /* per sub-row: count and column offsets */
+                uint32_t q = (m >> (4 * j)) & 15u;
+                cnt += nibble_count[q];
+                sx += nibble_sx[q];
+                sy += (int64_t)nibble_count[q] * sample_off(j);
+            }
             for (k = 0; k < 3; k++)
                 acc[k] += 16 * (int64_t)cnt * px[i].c[k] + (int64_t)px[i].t->cdx[k] * sx +
                           (int64_t)px[i].t->cdy[k] * sy;
@@ -692,9 +725,10 @@ void zs_abuffer_begin(zs_renderer *r)
         }
     }
     s->n_open = 0;
+    s->next_row = 0;
 }
 
-void zs_abuffer_row(zs_renderer *r, int y, uint8_t *row)
+static void one_row(zs_renderer *r, int y, uint8_t *row)
 {
     zs_aa_state *s = r->priv.aa;
     const int32_t w = (int32_t)r->cfg.width;
@@ -713,13 +747,35 @@ void zs_abuffer_row(zs_renderer *r, int y, uint8_t *row)
     for (i = 0; i < s->n_open;) {
         zs_aa_tri *a = &s->open[i];
         if (a->ybot <= next_y) {
-            *a = s->open[--s->n_open];
+            uint16_t last = --s->n_open, k, w = 0;
+            *a = s->open[last];
+            for (k = 0; k <= last; k++) { /* the sweep order: i gone, last now at i */
+                uint16_t v = s->order[k];
+                if (v != i)
+                    s->order[w++] = v == last ? i : v;
+            }
         } else {
             if (!row)
                 advance(r, a, 16 * y + 14);
             i++;
         }
     }
+}
+
+void zs_abuffer_row(zs_renderer *r, int y, uint8_t *row)
+{
+    zs_aa_state *s = r->priv.aa;
+    for (; s->next_row < y; s->next_row++)
+        one_row(r, s->next_row, 0); /* rows the caller skipped */
+    one_row(r, y, row);
+    s->next_row = (int16_t)(y + 1);
+}
+
+void zs_abuffer_rows(zs_renderer *r, int y0, int rows, uint8_t *buf, size_t stride)
+{
+    int k;
+    for (k = 0; k < rows; k++)
+        zs_abuffer_row(r, y0 + k, buf + (size_t)k * stride);
 }
 
 /* Keeps a triangle that covers no pixel centre for the resolve alone: a

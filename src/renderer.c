@@ -355,20 +355,17 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
         if (y < r->priv.line_next) /* hidden lines render a row ahead */
             continue;
         zs_raster_row(r, y, 0);
-        if (r->priv.aa_mode)
-            zs_abuffer_row(r, y, 0);
     }
     for (y = y0; y < y0 + rows; y++) {
-        if (!mono) {
-            uint8_t *line = (uint8_t *)buf + (size_t)(y - y0) * stride;
-            zs_raster_row(r, y, line);
-            if (r->priv.aa_mode)
-                zs_abuffer_row(r, y, line);
-        } else if (r->priv.out_format == ZS_FMT_MONO_PAGE) /* a page holds 8 rows */
+        if (!mono)
+            zs_raster_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
+        else if (r->priv.out_format == ZS_FMT_MONO_PAGE) /* a page holds 8 rows */
             mono_row(r, y, (uint8_t *)buf + (size_t)(y / 8 - y0 / 8) * stride);
         else
             mono_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
     }
+    if (r->priv.aa_mode && !mono) /* the A-buffer rewrites the rows' edge pixels */
+        zs_abuffer_rows(r, y0, rows, (uint8_t *)buf, stride);
     r->priv.next_row = y0 + rows;
     r->stats.rows += (uint32_t)rows;
     if (r->priv.next_row >= (int)r->cfg.height)

@@ -536,10 +536,12 @@ static inline void zs_fill_flat(uint8_t *row, int x0, int x1, unsigned bpp, uint
 void *zs_abuffer_carve(zs_renderer *r, uint8_t **cursor); /* its pools, from the arena */
 void zs_abuffer_frame(zs_renderer *r);                    /* zs_frame_begin: mode off */
 void zs_abuffer_begin(zs_renderer *r);                    /* first row of a frame */
-void zs_abuffer_row(zs_renderer *r, int y, uint8_t *row); /* after the row; NULL: step */
+void zs_abuffer_row(zs_renderer *r, int y, uint8_t *row); /* after the row (rows skipped
+                                                             since the last call are stepped) */
+void zs_abuffer_rows(zs_renderer *r, int y0, int rows, uint8_t *buf, size_t stride);
 /* A triangle that covers no pixel centre, kept for the resolve alone; ZS_SETUP_*. */
-int zs_abuffer_store(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, uint32_t color,
-                     uint16_t tag);
+ZS_COLD int zs_abuffer_store(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2,
+                             uint32_t color, uint16_t tag);
 /* shade.c: a record's colour at a vertex with shade word `shade` */
 uint32_t zs_vertex_rgb(const zs_renderer *r, const zs_tri *t, uint32_t shade);
 

@@ -236,8 +236,8 @@ const char *zs_strerror(zs_status status);
  *    triangle record a bucket link and an opacity (3 B);
  *  - opacity runs (zs_draw_opacity): ZS_ABUFFER_OPACITY_RUNS per frame. */
 #define ZS_ABUFFER_FRAGMENTS 16u
-#define ZS_ABUFFER_FRAGMENT_BYTES 48u
-#define ZS_ABUFFER_TRI_BYTES 160u
+#define ZS_ABUFFER_FRAGMENT_BYTES 32u
+#define ZS_ABUFFER_TRI_BYTES 184u
 #define ZS_ABUFFER_STATE_BYTES 96u
 #define ZS_ABUFFER_OPACITY_RUNS 16u
 #define ZS_ABUFFER_TRIS(max_edges) ((size_t)(max_edges) / 2u + (size_t)(max_edges) / 8u + 4u)

@@ -607,6 +607,21 @@ static void test_formats_and_off(void **state)
                 checked++;
             }
         }
+        /* rows skipped over (partial updates): the rest as in the whole frame */
+        {
+            zs_shade_params sp = zs_shade_default();
+            sp.format = ZS_FMT_RGB888;
+            sp.shading = ZS_SHADE_GOURAUD;
+            sp.background = ZS_RGB(9, 80, 200);
+            int y0 = 1 + n % 17;
+            ZT_ST(zs_frame_begin(&aa.r, &cam, ZS_MODE_SPAN), ZS_OK);
+            ZT_ST(zs_frame_shading(&aa.r, &sp), ZS_OK);
+            ZT_ST(zs_frame_antialias(&aa.r, ZS_AA_EDGES), ZS_OK);
+            ZT_ST(zs_draw(&aa.r, &m, NULL), ZS_OK);
+            ZT_ST(zs_render_rows(&aa.r, y0, H - y0, a, 3 * W), ZS_OK);
+            ZT_CHECK(memcmp(a, ref + (size_t)y0 * 3 * W, (size_t)(H - y0) * 3 * W) == 0,
+                     "scene %d: rows from %d differ from the whole frame's", n, y0);
+        }
         /* 1-bit: ordered dithering of the GRAY8 A-buffer frame */
         ZT_ST(frame(&aa, &cam, ZS_MODE_SPAN, ZS_FMT_GRAY8, ZS_AA_EDGES, &m, a, W, band), ZS_OK);
         ZT_ST(frame(&aa, &cam, ZS_MODE_SPAN, ZS_FMT_MONO_MSB, ZS_AA_EDGES, &m, b, W / 8, band),

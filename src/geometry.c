@@ -3,6 +3,7 @@
  * trivially accept or reject triangles by outcodes, clip the rest, and hand
  * every screen triangle to setup. */
 #include "zs_internal.h"
+#include "zs_mono.h" /* zs_lines_draw */
 
 #define WHITE 0xFFFFFFu
 #define REJECT_MASK                                                                       \
@@ -462,13 +463,24 @@ static ZS_NOINLINE void setup_inside(draw_ctx *c, uint16_t base, uint32_t tag_ba
     r->stats.tris_culled += culled;
 }
 
+/* Hidden lines: the eye-space normals of a draw's records (lines.c). */
+#ifdef ZS_NO_MONO
+#define LINES_NORMALS(c, first, tag_base) ((void)0)
+#else
+#define LINES_NORMALS(c, first, tag_base)                                                   \
+    do {                                                                                   \
+        if ((c)->r->priv.line_keep)                                                        \
+            zs_lines_draw((c)->r, (c)->mesh, (const int32_t(*)[3])(c)->mv, first, tag_base); \
+    } while (0)
+#endif
+
 zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
 {
     draw_ctx c;
     zs_vert *pool;
     uint32_t i, t, t_end, vfit, room, tag0, tag_base;
     int tag_fast, inside;
-    uint16_t base;
+    uint16_t base, first;
     if (!r || !m)
         return ZS_ERR_NULL;
     if (r->priv.state != ZS_STATE_OPEN)
@@ -487,8 +499,9 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     c.r = r;
     c.mesh = m;
     c.model = model ? model : &zs_identity34;
-    if (r->priv.draw_starts && r->priv.n_tris < r->cfg.max_triangles) /* hidden lines */
-        r->priv.draw_starts[r->priv.n_tris >> 3] |= (uint8_t)(1u << (r->priv.n_tris & 7u));
+    first = r->priv.n_tris;
+    if (r->priv.draw_starts && first < r->cfg.max_triangles) /* hidden lines */
+        r->priv.draw_starts[first >> 3] |= (uint8_t)(1u << (first & 7u));
     model_view(&c);
     prepare_clip_rows(&c);
     c.lit = (uint8_t)(r->shade.light_count > 0 || r->shade.ambient != ZS_FX_ONE);
@@ -521,6 +534,7 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     if (inside && vfit == m->vertex_count && tag_fast && !r->priv.ranges) {
         r->stats.tris_submitted += m->triangle_count;
         setup_inside(&c, base, tag_base);
+        LINES_NORMALS(&c, first, tag_base);
         return ZS_OK;
     }
     t = 0;
@@ -554,5 +568,6 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
         }
         count_outcome(&r->stats, outcome);
     }
+    LINES_NORMALS(&c, first, tag_base);
     return ZS_OK;
 }

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* 1-bit output: a row rendered in GRAY8 (or line flags) is dithered to one
  * bit per pixel and packed into the caller's buffer, in SSD1306 pages or
- * row-major MSB first. */
+ * row-major MSB first. Ordered dithering is a threshold test inside the
+ * packing loop (one pass over the row). */
 #include "zs_mono.h"
 
 /* The 8x8 Bayer index matrix (recursive construction, values 0..63); the
@@ -13,6 +14,17 @@ const uint8_t zs_bayer8[8][8] = {
     {15, 47, 7, 39, 13, 45, 5, 37}, {63, 31, 55, 23, 61, 29, 53, 21},
 };
 
+/* Ordered dithering with the 8x8 Bayer index matrix M (recursive
+ * construction, values 0..63): a pixel is on where 128 g > 255 (2 M + 1), so a
+ * flat grey g turns on round(64 g / 255) of every 64 pixels. 255 (2 M + 1) is
+ * odd, never a multiple of 128, so that is g > floor(255 (2 M + 1) / 128): the
+ * thresholds below, at (x mod 8, y mod 8) of the screen. */
+static const uint8_t bayer_thr[8][8] = {
+    {1, 129, 33, 161, 9, 137, 41, 169},    {193, 65, 225, 97, 201, 73, 233, 105},
+    {49, 177, 17, 145, 57, 185, 25, 153},  {241, 113, 209, 81, 249, 121, 217, 89},
+    {13, 141, 45, 173, 5, 133, 37, 165},   {205, 77, 237, 109, 197, 69, 229, 101},
+    {61, 189, 29, 157, 53, 181, 21, 149},  {253, 125, 221, 93, 245, 117, 213, 85},
+};
 /* Diffusion error is kept within this bound so the int16 line can never
  * overflow (Floyd-Steinberg errors stay far inside it on any input). */
 #define ERR_LIMIT 2048
@@ -21,17 +33,6 @@ void zs_mono_begin(zs_renderer *r)
 {
     if (r->priv.mono_err)
         memset(r->priv.mono_err, 0, (size_t)r->cfg.width * 2u);
-}
-
-/* Ordered dithering: pixel on where 128 g > 255 (2 M + 1), M the Bayer index
- * at (x mod 8, y mod 8) of the screen; a flat grey g turns on
- * round(64 g / 255) of every 64 pixels. */
-static void dither_bayer(uint8_t *g, int w, int y)
-{
-    const uint8_t *m = zs_bayer8[y & 7];
-    int x;
-    for (x = 0; x < w; x++)
-        g[x] = (uint8_t)(128u * g[x] > 255u * (2u * m[x & 7] + 1u));
 }
 
 static int32_t clamp_err(int32_t e)
@@ -43,7 +44,7 @@ static int32_t clamp_err(int32_t e)
  * the row below. err[] holds what the row above left for this row and is
  * rewritten, one column behind, with what this row leaves for the next. The
  * four parts always sum to the error (the 7/16 takes the rounding). */
-static void dither_diffuse(int16_t *err, uint8_t *g, int w)
+static ZS_NOINLINE void dither_diffuse(int16_t *err, uint8_t *g, int w)
 {
     int32_t right = 0, below_prev = 0, below_cur = 0;
     int x;
@@ -62,24 +63,46 @@ static void dither_diffuse(int16_t *err, uint8_t *g, int w)
     err[w - 1] = (int16_t)clamp_err(below_prev);
 }
 
-void zs_mono_row(zs_renderer *r, int y, uint8_t *g, uint8_t *out)
+/* One row into its page: bit y % 8 of each byte, on where g > t[x % 8]
+ * (Bayer thresholds) or, without t, where g is 1 (inverted: off); the last
+ * row clears the bits of its page below the screen. */
+static void pack_page(const uint8_t *g, const uint8_t *t, uint8_t *out, int w, int y,
+                      int last, unsigned inv)
 {
-    int w = r->cfg.width, x;
-    unsigned inv = (r->shade.mono & ZS_MONO_INVERT) ? 1u : 0u;
-    if (!(r->shade.mono & ZS_MONO_LINES)) {
-        if (r->shade.mono & ZS_MONO_DIFFUSE)
-            dither_diffuse(r->priv.mono_err, g, w);
-        else
-            dither_bayer(g, w, y);
-    }
-    if (r->priv.out_format == ZS_FMT_MONO_PAGE) {
-        uint8_t bit = (uint8_t)(1u << (y & 7));
-        /* the last row clears the bits of its page below the screen */
-        uint8_t keep = (uint8_t)(y + 1 == (int)r->cfg.height ? bit - 1 : ~bit);
+    uint8_t bit = (uint8_t)(1u << (y & 7));
+    uint8_t keep = (uint8_t)(last ? bit - 1 : ~bit);
+    uint8_t off = inv ? bit : 0; /* the bit of a pixel that is off */
+    int x;
+    if (t) {
+        for (x = 0; x < w; x++) {
+            unsigned on = g[x] > t[x & 7];
+            out[x] = (uint8_t)((out[x] & keep) | (off ^ ((0u - on) & bit)));
+        }
+    } else {
         for (x = 0; x < w; x++)
             out[x] = (uint8_t)((out[x] & keep) | ((g[x] ^ inv) ? bit : 0));
+    }
+}
+
+/* One row, MSB first, eight pixels a byte (the last byte's spare bits 0). */
+static void pack_msb(const uint8_t *g, const uint8_t *t, uint8_t *out, int w, unsigned inv)
+{
+    unsigned acc = 0;
+    int x;
+    if (t) {
+        unsigned flip = inv ? 0xFFu : 0u;
+        for (x = 0; x + 8 <= w; x += 8) {
+            const uint8_t *p = g + x;
+            acc = (unsigned)(p[0] > t[0]) << 7 | (unsigned)(p[1] > t[1]) << 6 |
+                  (unsigned)(p[2] > t[2]) << 5 | (unsigned)(p[3] > t[3]) << 4 |
+                  (unsigned)(p[4] > t[4]) << 3 | (unsigned)(p[5] > t[5]) << 2 |
+                  (unsigned)(p[6] > t[6]) << 1 | (unsigned)(p[7] > t[7]);
+            out[x >> 3] = (uint8_t)(acc ^ flip);
+        }
+        acc = 0;
+        for (; x < w; x++)
+            acc = (acc << 1) | ((unsigned)(g[x] > t[x & 7]) ^ inv);
     } else {
-        unsigned acc = 0;
         for (x = 0; x < w; x++) {
             acc = (acc << 1) | (g[x] ^ inv);
             if ((x & 7) == 7) {
@@ -87,7 +110,25 @@ void zs_mono_row(zs_renderer *r, int y, uint8_t *g, uint8_t *out)
                 acc = 0;
             }
         }
-        if (w & 7)
-            out[w >> 3] = (uint8_t)(acc << (8 - (w & 7)));
     }
+    if (w & 7)
+        out[w >> 3] = (uint8_t)(acc << (8 - (w & 7)));
+}
+
+void zs_mono_row(zs_renderer *r, int y, uint8_t *g, uint8_t *out)
+{
+    int w = r->cfg.width;
+    unsigned inv = (r->shade.mono & ZS_MONO_INVERT) ? 1u : 0u;
+    const uint8_t *t = 0; /* Bayer thresholds, or none: g is 0/1 */
+    /* ordered dithering happens in the packing, by threshold */
+    if (!(r->shade.mono & ZS_MONO_LINES)) {
+        if (r->shade.mono & ZS_MONO_DIFFUSE)
+            dither_diffuse(r->priv.mono_err, g, w);
+        else
+            t = bayer_thr[y & 7];
+    }
+    if (r->priv.out_format == ZS_FMT_MONO_PAGE)
+        pack_page(g, t, out, w, y, y + 1 == (int)r->cfg.height, inv);
+    else
+        pack_msb(g, t, out, w, inv);
 }

@@ -156,8 +156,13 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
             r->priv.mono_grey = carve(&cur, cfg->width);
         r->priv.line_ids[0] = carve(&cur, (size_t)cfg->width * 2u);
         r->priv.line_ids[1] = carve(&cur, (size_t)cfg->width * 2u);
+        /* the diffusion line is idle in a hidden-line frame */
+        r->priv.line_pending =
+            r->priv.mono_err ? (uint8_t *)r->priv.mono_err : carve(&cur, cfg->width);
         r->priv.tri_normal = carve(&cur, (size_t)cfg->max_triangles * ZS_TRI_NORMAL_BYTES);
         r->priv.draw_starts = carve(&cur, ((size_t)cfg->max_triangles + 7u) / 8u);
+        r->priv.line_next_rec = carve(&cur, (size_t)cfg->max_triangles * 6u);
+        r->priv.line_vert_head = carve(&cur, (size_t)cfg->max_vertices * 2u);
     }
     if (cfg->flags & ZS_CFG_PRIORITY) {
         r->priv.sort_list = carve(&cur, (size_t)cfg->max_triangles * 2u);
@@ -235,6 +240,8 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
     r->priv.tag_counter = 0;
     r->priv.next_row = 0;
     r->priv.tall_rows = 0xFFFFu; /* counted when Warnock mode or zs_pick needs it */
+    r->priv.line_next = 0;
+    r->priv.line_keep = 0;
     zs_abuffer_frame(r);
     memset(r->priv.buckets, 0xFF, (size_t)r->cfg.height * 2u);
     if (r->priv.draw_starts)
@@ -292,6 +299,7 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
         r->priv.light_dir[i] = dirs[i];
     r->shade = *p;
     r->priv.out_format = (uint8_t)p->format;
+    r->priv.line_keep = (uint8_t)(zs_format_is_mono(p->format) && (p->mono & ZS_MONO_LINES));
     if (zs_format_is_mono(p->format)) /* the stages render a scratch line */
         r->shade.format = (p->mono & ZS_MONO_LINES) ? ZS_FMT_ID16 : ZS_FMT_GRAY8;
     else if (p->format == ZS_FMT_GRAY4)
@@ -306,7 +314,7 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
 
 #ifndef ZS_NO_MONO
 /* One row of visibility: the row machinery, or area subdivision. */
-static void visible_row(zs_renderer *r, int y, uint8_t *row)
+void zs_visible_row(zs_renderer *r, int y, uint8_t *row)
 {
     if (r->priv.mode == ZS_MODE_WARNOCK)
         zs_warnock_rows(r, y, 1, row, 0);
@@ -325,17 +333,16 @@ static void mono_row(zs_renderer *r, int y, uint8_t *out)
 #else
     uint8_t *grey = r->priv.mono_grey;
     if (r->priv.out_format == ZS_FMT_GRAY4) {
-        visible_row(r, y, grey);
+        zs_visible_row(r, y, grey);
         if (r->priv.aa_mode)
             zs_abuffer_row(r, y, grey);
         zs_gray4_row(r, y, grey, out);
         return;
     }
     if (r->shade.mono & ZS_MONO_LINES) {
-        visible_row(r, y, (uint8_t *)r->priv.line_ids[0]);
-        zs_lines_row(r, y, grey);
+        zs_lines_row(r, y, grey); /* renders the rows it needs */
     } else {
-        visible_row(r, y, grey);
+        zs_visible_row(r, y, grey);
         if (r->priv.aa_mode) /* span mode only */
             zs_abuffer_row(r, y, grey);
     }
@@ -384,9 +391,10 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
         r->priv.state = ZS_STATE_RENDERING;
     }
     for (y = r->priv.next_row; y < y0; y++) {
+        if (y < r->priv.line_next) /* hidden lines render a row ahead */
+            continue;
         if (r->priv.mode != ZS_MODE_WARNOCK) /* it keeps no state between rows */
             zs_raster_row(r, y, 0);
-        r->priv.line_prev_row = 0; /* no ids of the row above */
     }
     if (kind == ZS_ROWS_BYTES) {
         for (y = y0; y < y0 + rows; y++)

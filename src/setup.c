@@ -175,8 +175,21 @@ int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, int
     col1 = zs_clampi(zs_first_row(xmax), 0, r->cfg.width);
     if (row0 >= row1 || col0 >= col1 ||
         ((row1 - row0) * (col1 - col0) <= 4 && xmax - xmin < 4096 && ymax - ymin < 4096 &&
-         !covers_any(a, b, c, row0, row1, col0, col1)))
-        return r->priv.aa_mode ? zs_abuffer_store(r, i0, i1, i2, color, tag) : ZS_SETUP_EMPTY;
+         !covers_any(a, b, c, row0, row1, col0, col1))) {
+        if (r->priv.aa_mode)
+            return zs_abuffer_store(r, i0, i1, i2, color, tag);
+#ifndef ZS_NO_MONO
+        if (r->priv.line_keep && r->priv.n_tris < r->cfg.max_triangles) {
+            /* hidden lines: kept out of the buckets, never rendered */
+            t = &r->priv.tris[r->priv.n_tris++];
+            t->v[0] = i0;
+            t->v[1] = i1;
+            t->v[2] = i2;
+            t->color = tag;
+        }
+#endif
+        return ZS_SETUP_EMPTY;
+    }
     if (r->priv.n_tris >= r->cfg.max_triangles)
         return ZS_SETUP_DROPPED; /* capacity policy: the last triangles are dropped */
     t = &r->priv.tris[r->priv.n_tris];

@@ -15,11 +15,20 @@ void zs_mono_begin(zs_renderer *r);
  * (only bit y % 8 of each byte changes), the row for ZS_FMT_MONO_MSB. */
 void zs_mono_row(zs_renderer *r, int y, uint8_t *g, uint8_t *out);
 
-/* lines.c: the normals of the frame's records (first row of a frame). */
+/* lines.c: the eye-space unit normals of the records a draw made (from
+ * index first on; tag_base = the draw's first tag number % 65535), from the
+ * mesh's own positions and mv, the model -> eye 3x3 (Q16). */
+void zs_lines_draw(zs_renderer *r, const zs_mesh *m, const int32_t mv[3][3], uint16_t first,
+                   uint32_t tag_base);
+/* lines.c: draw numbers and the records around each vertex (first row of
+ * a frame). */
 void zs_lines_begin(zs_renderer *r);
-/* Edge flags (0/1) of the row just rendered into line_ids[0], from it and
- * the row above (when line_prev_row); then the two id lines swap. */
+/* Edge flags (0/1) of row y. It renders row y + 1 (and row y itself when
+ * it was not rendered ahead), so each boundary's line can go on the pixel
+ * nearer to it, above or below. */
 void zs_lines_row(zs_renderer *r, int y, uint8_t *flags);
+/* renderer.c: one row of visibility into row (the row machinery, or Warnock). */
+void zs_visible_row(zs_renderer *r, int y, uint8_t *row);
 
 /* gray4.c: row y (g: GRAY8, overwritten or not) packed into out as
  * ZS_FMT_GRAY4, rounded or dithered (ZS_GRAY4_DITHER), inverted if asked. */

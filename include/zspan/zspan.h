@@ -151,9 +151,10 @@ const char *zs_strerror(zs_status status);
                                     grey scratch line and one line of diffusion
                                     error, 3 B per column */
 #define ZS_CFG_LINES 0x08u       /* hidden-line drawing (ZS_MONO_LINES): two lines of
-                                    triangle ids and a flag line (5 B per column,
-                                    1 B shared with ZS_CFG_MONO) and a normal and
-                                    a draw-start bit per triangle record (8 B + 1 bit) */
+                                    triangle ids and two flag lines (6 B per column,
+                                    4 B with ZS_CFG_MONO, whose lines it shares), a normal, three
+                                    links and a draw-start bit per triangle record
+                                    (14 B + 1 bit) and a link per vertex (2 B) */
 #define ZS_CFG_PRIORITY 0x40u    /* depth sorting for ZS_MODE_PRIORITY (zs_depth_sort,
                                     zspan/priority.h): a list and a work word per
                                     triangle record, 4 B */
@@ -191,8 +192,9 @@ const char *zs_strerror(zs_status status);
  * Per pool: vertices 8 B (+4 B shade), triangle records 12 B, row buckets
  * 2 B per row, edges 32 B, active triangles 60 B (+36 B colour planes), the
  * z-buffer line 10 B per column; with ZS_CFG_MONO 3 B per column, with
- * ZS_CFG_LINES 5 B per column (4 with ZS_CFG_MONO too) and 8 B and 1 bit
- * per triangle record; with ZS_CFG_PRIORITY 4 B per triangle record. */
+ * ZS_CFG_LINES 6 B per column (4 with ZS_CFG_MONO too), 14 B and 1 bit
+ * per triangle record and 2 B per vertex; with ZS_CFG_PRIORITY 4 B per
+ * triangle record. */
 #define ZS_ARENA_BYTES_CFG(w, h, max_tris, max_verts, max_edges, flags)            \
     (ZS_ROUND8_((size_t)(max_verts) * ZS_VERTEX_BYTES) +                            \
      ((((flags) & (ZS_CFG_FLAT_ONLY | ZS_CFG_TEXTURE)) == ZS_CFG_FLAT_ONLY)         \
@@ -212,8 +214,11 @@ const char *zs_strerror(zs_status status);
      (((flags) & (ZS_CFG_MONO | ZS_CFG_LINES)) ? ZS_ROUND8_((size_t)(w)) : 0u) +      \
      (((flags) & ZS_CFG_MONO) ? ZS_ROUND8_((size_t)(w) * 2u) : 0u) +                \
      (((flags) & ZS_CFG_LINES) ? 2u * ZS_ROUND8_((size_t)(w) * 2u) +                 \
+                                     (((flags) & ZS_CFG_MONO) ? 0u : ZS_ROUND8_((size_t)(w))) + \
                                      ZS_ROUND8_((size_t)(max_tris) * ZS_TRI_NORMAL_BYTES) + \
-                                     ZS_ROUND8_(((size_t)(max_tris) + 7u) / 8u)     \
+                                     ZS_ROUND8_(((size_t)(max_tris) + 7u) / 8u) +   \
+                                     ZS_ROUND8_((size_t)(max_tris) * 6u) +          \
+                                     ZS_ROUND8_((size_t)(max_verts) * 2u)           \
                                : 0u) +                                              \
      (((flags) & ZS_CFG_PRIORITY) ? 2u * ZS_ROUND8_((size_t)(max_tris) * 2u) : 0u) +   \
      (((flags) & ZS_CFG_TEXTURE)                                                    \
@@ -584,7 +589,7 @@ typedef struct zs_renderer_private {
     uint16_t *zline_owner;          /* triangle owning each z-buffer pixel */
     uint8_t *mono_grey;             /* ZS_CFG_MONO: the row in GRAY8 before dithering */
     int16_t *mono_err;              /* ZS_CFG_MONO: diffusion error for the next row */
-    uint16_t *line_ids[2];          /* ZS_CFG_LINES: this row's and the last row's ids */
+    uint16_t *line_ids[2];          /* ZS_CFG_LINES: this row's and the next row's ids */
     int16_t *tri_normal;            /* ZS_CFG_LINES: unit normal (Q14) and draw number
                                        per record */
     uint8_t *draw_starts;           /* ZS_CFG_LINES: bit per record, set where a draw's
@@ -604,7 +609,9 @@ typedef struct zs_renderer_private {
     uint8_t steep;                    /* a steep plane is active this frame */
     uint8_t out_format;               /* the format asked for; shade.format is the
                                          scratch line's (GRAY8, ID16) for 1-bit ones */
-    uint8_t line_prev_row;            /* line_ids[1] holds the row above */
+    uint8_t line_keep;                /* a hidden-line frame: records of the triangles
+                                         that hold no pixel centre are kept (not
+                                         rendered) so the mesh around them is known */
     int32_t crease_cos;               /* cos of the crease angle, Q28 */
     int64_t line_depth_a;             /* far / (far - near), Q30: 1/w ~ A - depth */
     /* ZS_CFG_TEXTURE (texture.c); NULL without it */
@@ -627,6 +634,13 @@ typedef struct zs_renderer_private {
     /* A-buffer (abuffer.c) */
     struct zs_aa_state *aa;           /* its pools; NULL without ZS_CFG_ABUFFER */
     uint8_t aa_mode;                  /* zs_aa_mode of the frame */
+    /* hidden lines (lines.c), ZS_CFG_LINES */
+    uint8_t *line_pending;            /* flags the next row has got */
+    uint16_t *line_vert_head;         /* per pool vertex, a record using it */
+    uint16_t *line_next_rec;          /* per record corner, the next record using that
+                                         corner's vertex */
+    int32_t line_next;                /* the next row to render (rows are rendered one
+                                         ahead of the output) */
 } zs_renderer_private;
 
 /* Holds the arena's pools and the frame state. The struct is public so it

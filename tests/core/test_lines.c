@@ -8,28 +8,32 @@
  * the test draws: every mesh edge is classified by its faces (front or back
  * from the world-space geometry and the eye): a boundary edge of a front
  * face, a silhouette (one face front, one back), a crease (both front, the
- * normals more than the crease angle apart). Each such edge is sampled every
- * 1/10 px on screen and each sample is ray cast against every front face of
- * the scene: visible when nothing but the edge's own faces is nearer. The
- * scenes are closed meshes (cubes, spheres, a prism) and an open one (a
+ * normals more than the crease angle apart). The scenes are closed meshes (cubes, spheres, a prism) and an open one (a
  * folded sheet), each its own draw call, placed so they occlude each other
  * without interpenetrating, so the visible edges are exactly the drawing's
  * lines.
  *
+ * Each feature edge is sampled every 1/10 px on screen and each sample is
+ * ray cast against every front face (visible when nothing but the edge's
+ * own faces is nearer); where
+ * visibility changes between two samples the change is found by bisection
+ * to 1/1000 px, so the visible pieces of the edges are known as segments.
+ *
  * Checked on every scene, in both visibility modes and both 1-bit layouts:
- *  - every drawn pixel is within 1.25 px (1 px, plus the snap and the
- *    sub-pixel faces at silhouettes) of a visible edge sample (Chebyshev
- *    distance from its centre); the largest distance is printed;
+ *  - every drawn pixel is within 1 px (Chebyshev distance from its centre)
+ *    of a visible piece of a feature edge; the largest distance is printed.
+ *    Hidden edges are never drawn: a pixel near only hidden pieces fails;
  *  - at least 98% of the visible samples (so of the visible length) have a
- *    drawn pixel within that distance;
- *  - hidden samples far from any visible one never get a drawn pixel (part
- *    of the first check; counted separately);
+ *    drawn pixel within 1 px: on every model view, and over the random
+ *    scenes together (a random scene may hold a sheet seen edge-on, thinner
+ *    than a pixel, which no pixel centre sees: at least 90% there);
  *  - span == zline, page == MSB layouts, and any band height give the same
  *    drawing.
  * The same on models of Debian's assimp-testmodels (each turned three ways,
- * with a box beside it), where the files are installed; there the drawn
- * pixels may include up to 2% of false-crease pixels (sub-pixel triangles)
- * and each view must show 98% of the visible length.
+ * with a box beside it), where the files are installed.
+ * ZT_LINES_SURVEY=1 prints every scene's figures and only counts failures;
+ * ZT_LINES_DUMP=1 writes out/lines_N.ppm; ZT_LINES_PROBE=scene,x,y prints
+ * the triangles around a pixel.
  */
 #include "zt_test.h"
 
@@ -44,10 +48,22 @@
 #define H 120
 #define NSCENES 60
 #define CREASE 30
-/* 1 px, plus 1/4 px: the vertices are snapped to 1/16 px, and near-edge-on
- * faces at a silhouette may cover no pixel centre (the drawn contour is then
- * the next face's edge, up to a fraction of a pixel inside) */
-#define TOL 1.25
+/* the bound: within 1 px of a visible edge */
+#define TOL 1.0
+/* ZT_LINES_SURVEY=1: the figures of every scene, the checks only counted */
+static int g_survey, g_survey_fails;
+#define LCHECK(cond, ...)                                                        \
+    do {                                                                         \
+        if (g_survey) {                                                          \
+            if (!(cond)) {                                                       \
+                g_survey_fails++;                                                \
+                print_message(__VA_ARGS__);                                      \
+                print_message("\n");                                             \
+            }                                                                    \
+        } else {                                                                 \
+            ZT_CHECK(cond, __VA_ARGS__);                                         \
+        }                                                                        \
+    } while (0)
 #define SEED 0x11AE500000000016ull
 #define PI 3.14159265358979323846
 
@@ -260,9 +276,16 @@ typedef struct sample {
     int visible;
 } sample;
 
+/* A visible piece of a feature edge, on screen (px). */
+typedef struct seg {
+    double x0, y0, x1, y1;
+} seg;
+
 typedef struct samples {
     sample *v;
     size_t n, cap;
+    seg *s;
+    size_t ns, caps;
 } samples;
 
 static void push(samples *s, double x, double y, int vis)
@@ -275,6 +298,104 @@ static void push(samples *s, double x, double y, int vis)
     s->v[s->n].y = y;
     s->v[s->n].visible = vis;
     s->n++;
+}
+
+static void push_seg(samples *s, double x0, double y0, double x1, double y1)
+{
+    if (s->ns == s->caps) {
+        s->caps = s->caps ? 2 * s->caps : 1024;
+        s->s = realloc(s->s, s->caps * sizeof *s->s);
+    }
+    s->s[s->ns].x0 = x0;
+    s->s[s->ns].y0 = y0;
+    s->s[s->ns].x1 = x1;
+    s->s[s->ns].y1 = y1;
+    s->ns++;
+}
+
+/* One feature edge A-B (world) of faces q1 and q2 (q2 -1 for a boundary). */
+typedef struct fedge {
+    double A[3], B[3], ax, ay, bx, by;
+    int q1, q2;
+} fedge;
+
+/* The screen point at parameter u of the edge (uniform on screen). */
+static void edge_at(const fedge *e, double u, double *sx, double *sy)
+{
+    *sx = e->ax + u * (e->bx - e->ax);
+    *sy = e->ay + u * (e->by - e->ay);
+}
+
+/* Is the edge point at screen parameter u visible: does the ray to it meet
+ * no front face (but its own) nearer? */
+static int edge_visible(const scene *s, const fedge *e, double u)
+{
+    /* the perspective-correct world parameter of u */
+    double wa = -e->A[2], wb = -e->B[2];
+    double t = u * wa / (u * wa + (1 - u) * wb);
+    double P[3];
+    for (int c = 0; c < 3; c++) P[c] = e->A[c] + t * (e->B[c] - e->A[c]);
+    for (int q = 0; q < s->nt; q++) {
+        if (q == e->q1 || q == e->q2 || !s->t[q].front) continue;
+        double f = ray_hit(&s->t[q], P);
+        if (f > 0 && f < 1 - 1e-9) return 0;
+    }
+    return 1;
+}
+
+/* Samples every 1/10 px of the edge's on-screen part, and its visible
+ * pieces, their ends found by bisection to 1/1000 px where visibility
+ * changes between two samples. */
+static void sample_edge(const scene *s, const fedge *e, samples *out)
+{
+    int n = (int)ceil(hypot(e->bx - e->ax, e->by - e->ay) * 10) + 1;
+    double len = hypot(e->bx - e->ax, e->by - e->ay);
+    int bis = 1;
+    while (len / n / (1 << bis) > 0.001 && bis < 20) bis++;
+    double run_u = 0;
+    int run = 0, prev_vis = 0;
+    double prev_u = 0;
+    for (int k = 0; k <= n; k++) {
+        double u = (double)k / n, sx, sy;
+        edge_at(e, u, &sx, &sy);
+        int inside = !(sx < 0 || sy < 0 || sx >= W || sy >= H);
+        int vis = inside && edge_visible(s, e, u);
+        if (inside) push(out, sx, sy, vis);
+        if (k > 0 && vis != prev_vis) {
+            /* the change lies between prev_u and u */
+            double lo = prev_u, hi = u;
+            for (int b = 0; b < bis; b++) {
+                double m = (lo + hi) / 2, mx, my;
+                edge_at(e, m, &mx, &my);
+                int mv = !(mx < 0 || my < 0 || mx >= W || my >= H) && edge_visible(s, e, m);
+                if (mv == prev_vis)
+                    lo = m;
+                else
+                    hi = m;
+            }
+            if (vis) {
+                run = 1;
+                run_u = hi;
+            } else if (run) {
+                double x0, y0, x1, y1;
+                edge_at(e, run_u, &x0, &y0);
+                edge_at(e, lo, &x1, &y1);
+                push_seg(out, x0, y0, x1, y1);
+                run = 0;
+            }
+        } else if (k == 0 && vis) {
+            run = 1;
+            run_u = 0;
+        }
+        prev_vis = vis;
+        prev_u = u;
+    }
+    if (run) {
+        double x0, y0, x1, y1;
+        edge_at(e, run_u, &x0, &y0);
+        edge_at(e, 1, &x1, &y1);
+        push_seg(out, x0, y0, x1, y1);
+    }
 }
 
 /* Samples every feature edge of the scene. */
@@ -302,34 +423,39 @@ static void feature_samples(const scene *s, samples *out)
                 else
                     feature = t1->front && dot(t1->n, t2->n) < cosc;
                 if (!feature) continue;
-                double A[3], B[3], ax, ay, bx, by;
-                world_of(m, &s->model[d], a, A);
-                world_of(m, &s->model[d], b, B);
-                zt_world_to_px(W, H, A[0], A[1], A[2], &ax, &ay);
-                zt_world_to_px(W, H, B[0], B[1], B[2], &bx, &by);
-                int n = (int)ceil(hypot(bx - ax, by - ay) * 10) + 1;
-                for (int k = 0; k <= n; k++) {
-                    /* uniform on screen: the world point under the screen point */
-                    double u = (double)k / n;
-                    double sx = ax + u * (bx - ax), sy = ay + u * (by - ay);
-                    if (sx < 0 || sy < 0 || sx >= W || sy >= H) continue;
-                    /* the perspective-correct world parameter of u */
-                    double wa = -A[2], wb = -B[2];
-                    double t = u * wa / (u * wa + (1 - u) * wb);
-                    double P[3];
-                    for (int c = 0; c < 3; c++) P[c] = A[c] + t * (B[c] - A[c]);
-                    int vis = 1;
-                    for (int q = 0; q < s->nt && vis; q++) {
-                        if (q == base + i || (other >= 0 && q == base + other) || !s->t[q].front)
-                            continue;
-                        double f = ray_hit(&s->t[q], P);
-                        if (f > 0 && f < 1 - 1e-9) vis = 0;
-                    }
-                    push(out, sx, sy, vis);
-                }
+                fedge fe;
+                world_of(m, &s->model[d], a, fe.A);
+                world_of(m, &s->model[d], b, fe.B);
+                zt_world_to_px(W, H, fe.A[0], fe.A[1], fe.A[2], &fe.ax, &fe.ay);
+                zt_world_to_px(W, H, fe.B[0], fe.B[1], fe.B[2], &fe.bx, &fe.by);
+                fe.q1 = base + i;
+                fe.q2 = other >= 0 ? base + other : -1;
+                sample_edge(s, &fe, out);
             }
         base += m->nt;
     }
+}
+
+/* Chebyshev (L-infinity) distance from (px, py) to a segment: the largest
+ * of two linear functions' absolute values is convex along the segment, so
+ * its least value is at an end or where one of the lines x = px, y = py,
+ * x - px = +-(y - py) crosses it. */
+static double seg_dist(const seg *g, double px, double py)
+{
+    double dx = g->x1 - g->x0, dy = g->y1 - g->y0, ex = g->x0 - px, ey = g->y0 - py;
+    double cand[6] = {0, 1, -1, -1, -1, -1}, best = 1e300;
+    if (dx != 0) cand[2] = -ex / dx;
+    if (dy != 0) cand[3] = -ey / dy;
+    if (dx - dy != 0) cand[4] = -(ex - ey) / (dx - dy);
+    if (dx + dy != 0) cand[5] = -(ex + ey) / (dx + dy);
+    for (int k = 0; k < 6; k++) {
+        double u = cand[k];
+        if (u < 0 || u > 1) continue;
+        double a = fabs(ex + u * dx), b = fabs(ey + u * dy);
+        double d = a > b ? a : b;
+        if (d < best) best = d;
+    }
+    return best;
 }
 
 /* ---- scenes ---- */
@@ -519,6 +645,60 @@ static zs_status draw_lines(ctx *c, const scene *s, zs_visibility mode, zs_forma
     return ZS_OK;
 }
 
+
+/* debugging aid: ZT_LINES_PROBE=scene,x,y prints the triangle tags around a
+ * pixel and the oracle's view of them */
+static void probe(ctx *c, const scene *s, int k)
+{
+    const char *e = getenv("ZT_LINES_PROBE");
+    int pk, px, py;
+    if (!e || sscanf(e, "%d,%d,%d", &pk, &px, &py) != 3 || pk != k) return;
+    zs_camera cam;
+    zt_camera_std(&cam, ZS_FX(1) / 4, ZS_FX(40));
+    zs_frame_begin(&c->r, &cam, ZS_MODE_SPAN);
+    zs_shade_params sp = zs_shade_default();
+    sp.format = ZS_FMT_ID16;
+    zs_frame_shading(&c->r, &sp);
+    for (int d = 0; d < s->nmesh; d++) {
+        zs_mesh m;
+        memset(&m, 0, sizeof m);
+        m.positions = s->meshes[d].pos;
+        m.indices = s->meshes[d].idx;
+        m.scale = s->meshes[d].scale;
+        m.vertex_count = (uint16_t)s->meshes[d].nv;
+        m.triangle_count = (uint16_t)s->meshes[d].nt;
+        m.color = 0xFFFFFF;
+        zs_draw(&c->r, &m, &s->model[d]);
+    }
+    uint16_t *ids = malloc(W * H * 2);
+    zs_render_rows(&c->r, 0, H, ids, W * 2);
+    for (int y = py - 2; y <= py + 2; y++) {
+        for (int x = px - 3; x <= px + 3; x++)
+            fprintf(stderr, " %5d", (x >= 0 && x < W && y >= 0 && y < H) ? ids[y * W + x] : -1);
+        fprintf(stderr, "\n");
+    }
+    int seen[64], ns = 0;
+    for (int y = py - 2; y <= py + 2; y++)
+        for (int x = px - 3; x <= px + 3; x++) {
+            if (x < 0 || x >= W || y < 0 || y >= H) continue;
+            int id = ids[y * W + x], dup = 0;
+            for (int i = 0; i < ns; i++) dup |= seen[i] == id;
+            if (!dup && id && ns < 64) seen[ns++] = id;
+        }
+    for (int i = 0; i < ns; i++) {
+        const wtri *t = &s->t[seen[i] - 1];
+        double sx[3], sy[3];
+        for (int j = 0; j < 3; j++) zt_world_to_px(W, H, t->p[j][0], t->p[j][1], t->p[j][2], &sx[j], &sy[j]);
+        fprintf(stderr, "tag %d: draw %d tri %d front %d n (%.3f %.3f %.3f) screen (%.2f,%.2f) (%.2f,%.2f) (%.2f,%.2f)\n",
+                seen[i], t->draw, t->index, t->front, t->n[0], t->n[1], t->n[2], sx[0], sy[0], sx[1], sy[1], sx[2], sy[2]);
+        for (int j = 0; j < i; j++) {
+            const wtri *u = &s->t[seen[j] - 1];
+            fprintf(stderr, "   angle to %d: %.1f deg\n", seen[j], acos(fmin(1, dot(t->n, u->n))) * 180 / PI);
+        }
+    }
+    free(ids);
+}
+
 static int px_on(const uint8_t *img, zs_format fmt, int x, int y)
 {
     if (fmt == ZS_FMT_MONO_PAGE) return (img[(y / 8) * W + x] >> (y % 8)) & 1;
@@ -530,6 +710,7 @@ static void test_lines_vs_oracle(void **state)
     (void)state;
     zt_rng g;
     zt_rng_seed(&g, SEED);
+    g_survey = getenv("ZT_LINES_SURVEY") != NULL;
     ctx c;
     zs_config cfg = zs_config_default(W, H, 30000, 30000, 4096);
     cfg.flags = ZS_CFG_LINES;
@@ -537,11 +718,12 @@ static void test_lines_vs_oracle(void **state)
     c.arena = malloc(an);
     ZT_ST(zs_init(&c.r, c.arena, an, &cfg), ZS_OK);
     uint8_t *img = malloc(W * H), *ref = malloc(W * H);
-    uint8_t *on = malloc(W * H), *near_vis = malloc(W * H);
+    uint8_t *on = malloc(W * H);
     double *dist = malloc(W * H * sizeof *dist), worst_dist = 0;
-    double worst_recall = 1;
+    double worst_recall = 1, worst_model_recall = 1;
+    int random_short = 0;
     long total_drawn = 0, total_vis = 0, total_hidden_only = 0, total_found = 0;
-    long model_stray = 0, model_drawn = 0;
+    long model_drawn = 0;
     int models_loaded = 0;
     for (int k = 0; k < NSCENES + NMODELS * MODEL_VIEWS; k++) {
         scene s;
@@ -558,6 +740,7 @@ static void test_lines_vs_oracle(void **state)
             model_scene(&g, &s);
         }
         build_world(&s);
+        probe(&c, &s, k);
         samples sm = {0};
         feature_samples(&s, &sm);
         ZT_ST(draw_lines(&c, &s, ZS_MODE_SPAN, ZS_FMT_MONO_MSB, ref, 8), ZS_OK);
@@ -576,22 +759,24 @@ static void test_lines_vs_oracle(void **state)
                     ZT_CHECK(px_on(img, fmt, x, y) == on[y * W + x],
                              "scene %d variant %d: pixel (%d,%d) differs", k, v, x, y);
         }
-        /* precision: every drawn pixel near a visible sample */
-        memset(near_vis, 0, W * H);
+        /* precision: the distance of every pixel centre to the visible
+         * pieces of the feature edges (within 3 px; farther counts as 9) */
         for (int i = 0; i < W * H; i++) dist[i] = 9;
-        for (size_t i = 0; i < sm.n; i++) {
-            if (!sm.v[i].visible) continue;
-            for (int y = (int)sm.v[i].y - 3; y <= (int)sm.v[i].y + 3; y++)
-                for (int x = (int)sm.v[i].x - 3; x <= (int)sm.v[i].x + 3; x++) {
+        for (size_t i = 0; i < sm.ns; i++) {
+            const seg *gs = &sm.s[i];
+            int x0 = (int)floor(fmin(gs->x0, gs->x1)) - 3, x1 = (int)floor(fmax(gs->x0, gs->x1)) + 3;
+            int y0 = (int)floor(fmin(gs->y0, gs->y1)) - 3, y1 = (int)floor(fmax(gs->y0, gs->y1)) + 3;
+            for (int y = y0; y <= y1; y++)
+                for (int x = x0; x <= x1; x++) {
                     if (x < 0 || y < 0 || x >= W || y >= H) continue;
-                    double dx = fabs(x + 0.5 - sm.v[i].x), dy = fabs(y + 0.5 - sm.v[i].y);
-                    double dd = dx > dy ? dx : dy;
+                    double dd = seg_dist(gs, x + 0.5, y + 0.5);
                     if (dd < dist[y * W + x]) dist[y * W + x] = dd;
                 }
         }
         long vis = 0, found = 0;
         for (size_t i = 0; i < sm.n; i++) {
             const sample *p = &sm.v[i];
+            if (!p->visible) continue;
             int x0 = (int)floor(p->x - 0.5 - TOL), x1 = (int)ceil(p->x - 0.5 + TOL);
             int y0 = (int)floor(p->y - 0.5 - TOL), y1 = (int)ceil(p->y - 0.5 + TOL);
             int hit = 0;
@@ -599,24 +784,21 @@ static void test_lines_vs_oracle(void **state)
                 for (int x = x0; x <= x1; x++) {
                     if (x < 0 || y < 0 || x >= W || y >= H) continue;
                     if (fabs(x + 0.5 - p->x) > TOL || fabs(y + 0.5 - p->y) > TOL) continue;
-                    if (p->visible) near_vis[y * W + x] = 1;
                     if (on[y * W + x]) hit = 1;
                 }
-            if (p->visible) {
-                vis++;
-                found += hit;
-            }
+            vis++;
+            found += hit;
         }
         long drawn = 0, stray = 0;
         double dist_scene = 0;
         for (int i = 0; i < W * H; i++) {
             drawn += on[i];
             if (on[i] && dist[i] > dist_scene) dist_scene = dist[i];
-            if (on[i] && !near_vis[i]) {
+            if (on[i] && dist[i] > TOL) {
                 stray++;
                 if (stray <= 3)
                     print_error("scene %d: drawn pixel (%d,%d) is %.3f px from the nearest "
-                                "visible edge sample (limit %.2f)\n",
+                                "visible edge (limit %.2f)\n",
                                 k, i % W, i / W, dist[i], TOL);
             }
         }
@@ -639,51 +821,57 @@ static void test_lines_vs_oracle(void **state)
             }
         }
         double recall = vis ? (double)found / vis : 1;
+        if (getenv("ZT_LINES_VERBOSE"))
+        {
+            int wi = 0;
+            for (int i = 0; i < W * H; i++) if (on[i] && dist[i] == dist_scene) wi = i;
+            print_message("scene %d: max dist %.3f at (%d,%d) recall %.4f drawn %ld\n", k, dist_scene, wi % W, wi / W, recall, drawn);
+        }
         if (recall < worst_recall) worst_recall = recall;
         total_drawn += drawn;
         total_vis += vis;
         total_hidden_only += stray;
-        ZT_CHECK(drawn > 50 && vis > 100, "scene %d: a real drawing (%ld px, %ld samples)", k,
+        LCHECK(drawn > 50 && vis > 100, "scene %d: a real drawing (%ld px, %ld samples)", k,
                  drawn, vis);
         if (k >= NSCENES)
             print_message("lines: model %s view %d: %ld drawn pixels, %ld not near a visible "
                           "edge, %.2f%% of the visible length drawn\n",
                           k_models[(k - NSCENES) / MODEL_VIEWS], (k - NSCENES) % MODEL_VIEWS,
                           drawn, stray, vis ? 100.0 * (double)found / (double)vis : 0.0);
-        /* Models: dense meshes have triangles of a pixel or less, whose normals
-         * (from 1/16 px screen vertices) can be far off, so a few pixels of a
-         * false crease may be drawn; at most 2% of the drawing. */
-        ZT_CHECK(k >= NSCENES ? stray * 50 <= drawn : stray == 0,
-                 "scene %d: %ld of %ld drawn pixels are not near a visible edge", k, stray, drawn);
+        LCHECK(stray == 0, "scene %d: %ld of %ld drawn pixels are farther than %.2f px from a "
+               "visible edge", k, stray, drawn, TOL);
+        if (dist_scene > worst_dist) worst_dist = dist_scene;
         if (k >= NSCENES) {
-            model_stray += stray;
             model_drawn += drawn;
-            ZT_CHECK(recall >= 0.98, "model view %d: %.2f%% of the visible length drawn", k,
-                     100 * recall);
-        } else if (dist_scene > worst_dist) {
-            worst_dist = dist_scene;
+            if (recall < worst_model_recall) worst_model_recall = recall;
+            LCHECK(recall >= 0.98, "model view %d: %.2f%% of the visible length drawn", k,
+                   100 * recall);
+        } else {
+            if (recall < 0.98) random_short++;
+            /* a sheet seen edge-on, or the tip of a sharp corner, is thinner
+             * than a pixel there: no pixel centre sees it, so no line can be
+             * drawn along it (the 2% of the whole set allow for them) */
+            LCHECK(recall >= 0.90, "scene %d: %.2f%% of the visible edge length drawn", k,
+                   100 * recall);
         }
-        /* sub-pixel slivers (a sheet seen edge-on) cover no pixel centre and
-         * cannot be drawn: a scene may lose a little more than the 2% the
-         * whole set may lose */
-        ZT_CHECK(recall >= 0.95, "scene %d: %.2f%% of the visible edge length drawn", k,
-                 100 * recall);
         total_found += found;
         free(sm.v);
+        free(sm.s);
+
         free(s.t);
         for (int d = 0; d < s.nmesh; d++) mesh_release(&s.meshes[d]);
     }
     double all = total_vis ? (double)total_found / total_vis : 0;
     print_message("lines: %d random scenes and the model views: %ld drawn pixels, %ld visible "
-                  "edge samples; %.2f%% of the visible length drawn (worst scene %.2f%%); on the "
-                  "random scenes every drawn pixel at most %.3f px from a visible edge; on the "
-                  "models %ld of %ld drawn pixels farther than %.2f px\n",
-                  NSCENES, total_drawn, total_vis, 100 * all, 100 * worst_recall, worst_dist,
-                  model_stray, model_drawn, TOL);
-    ZT_CHECK(all >= 0.98, "%.2f%% of the visible edge length drawn", 100 * all);
+                  "edge samples; %.2f%% of the visible length drawn (worst scene %.2f%%, worst "
+                  "model view %.2f%%, %d random scenes under 98%%); every drawn pixel at most "
+                  "%.3f px from a visible edge (models: %ld drawn pixels)\n",
+                  NSCENES, total_drawn, total_vis, 100 * all, 100 * worst_recall,
+                  100 * worst_model_recall, random_short, worst_dist, model_drawn);
+    LCHECK(all >= 0.98, "%.2f%% of the visible edge length drawn", 100 * all);
     print_message("lines: %d model views (%d models of %d found)\n", models_loaded,
                   models_loaded / MODEL_VIEWS, NMODELS);
-    free(img); free(ref); free(on); free(near_vis); free(dist);
+    free(img); free(ref); free(on); free(dist);
     free(c.arena);
 }
 

@@ -363,8 +363,9 @@ static void test_api(void **state)
     ZT_CHECK(ZS_ARENA_BYTES_CFG(W, H, 400, 1200, 400, ZS_CFG_MONO) == zs_arena_bytes(&cfg),
              "macro == run time");
     cfg.flags = ZS_CFG_LINES;
-    ZT_CHECK(zs_arena_bytes(&cfg) == base + 80 + 2 * 160 + 400 * 8 + 56,
-             "lines add a flag line, two id lines, 8 B and 1 bit per record");
+    ZT_CHECK(zs_arena_bytes(&cfg) == base + 2 * 80 + 2 * 160 + 400 * (8 + 6) + 56 + 1200 * 2,
+             "lines add two flag lines, two id lines, 14 B and 1 bit per record, 2 B per "
+             "vertex");
     ZT_CHECK(ZS_ARENA_BYTES_CFG(W, H, 400, 1200, 400, ZS_CFG_LINES) == zs_arena_bytes(&cfg),
              "macro == run time");
     cfg.flags = 0x8000;

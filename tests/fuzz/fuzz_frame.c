@@ -1010,11 +1010,15 @@ static void check_mono(const scene *s, const frame_out *id)
             int a = bit_of(g_mono[0], ZS_FMT_MONO_PAGE, w, x, y);
             FZ_CHECK(a == bit_of(g_mono[1], ZS_FMT_MONO_MSB, w, x, y),
                      "line drawings differ (span page / zline msb) at (%d,%d)", x, y);
-            if (!a || !id->rendered[y] || (y > 0 && !id->rendered[y - 1]))
+            if (!a || !id->rendered[y] || (y > 0 && !id->rendered[y - 1]) ||
+                (y + 1 < h && !id->rendered[y + 1]))
                 continue;
+            /* the line goes on either pixel of a boundary */
             uint16_t t = id_at(id, w, x, y);
             FZ_CHECK((x > 0 && id_at(id, w, x - 1, y) != t) ||
-                         (y > 0 && id_at(id, w, x, y - 1) != t),
+                         (y > 0 && id_at(id, w, x, y - 1) != t) ||
+                         (x + 1 < w && id_at(id, w, x + 1, y) != t) ||
+                         (y + 1 < h && id_at(id, w, x, y + 1) != t),
                      "line pixel (%d,%d) inside one triangle (tag %u)", x, y, t);
         }
 }

@@ -449,8 +449,11 @@ static int decode_scene(fz_reader *d, scene *s)
         unsigned allowed = 0;
 #ifdef ZS_CFG_NO_ZLINE
         c.flags = fz_u16(d);
-        if (c.flags & ~(unsigned)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES))
+        if (c.flags & ~(unsigned)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES |
+                                  ZS_CFG_PRIORITY | ZS_CFG_TEXTURE | ZS_CFG_ABUFFER))
             allowed |= BIT(ZS_ERR_ARGUMENT);
+        if ((c.flags & ZS_CFG_TEXTURE) && (c.flags & ZS_CFG_ABUFFER))
+            allowed |= BIT(ZS_ERR_ARGUMENT); /* refused together (renderer.c) */
 #endif
         if (c.width == 0 || c.height == 0 || c.width > ZS_MAX_DIM || c.height > ZS_MAX_DIM)
             allowed |= BIT(ZS_ERR_SIZE);

@@ -11,7 +11,9 @@
  * Command line (qemu -semihosting-config arg=...): "quick" renders frame 0 of
  * the first scene in both modes and in the three 1-bit outputs of
  * bench_mono_frame (the firmware test of make test); "rows"
- * forces the per-row timing below even when a framebuffer fits.
+ * forces the per-row timing below even when a framebuffer fits. For profiles:
+ * a scene's name renders only that scene, "span" or "zline" only that mode,
+ * "notex" skips the textured scene.
  *
  * Instructions are counted from SysTick ticks * the calibrated instructions
  * per tick (qemu -icount shift=0 runs one instruction per ns) around
@@ -59,13 +61,22 @@ int main(void)
     size_t free_bytes;
     uint8_t *free_ram = port_free_ram(&free_bytes);
     uint32_t ipt, overhead_milli;
-    int quick = 0, per_row = 0, si, errors = 0, i;
+    int quick = 0, per_row = 0, si, errors = 0, i, only_scene = 0, notex = 0;
+    int mode_lo = 0, mode_hi = 2;
     const char *board = port_this_board.name;
 
     if (sh_get_cmdline(cmd, sizeof cmd) == 0)
     {
         quick = has_word(cmd, "quick");
         per_row = has_word(cmd, "rows");
+        notex = has_word(cmd, "notex");
+        for (si = 0; si < BENCH_SCENE_COUNT; si++)
+            if (has_word(cmd, bench_scenes[si].name))
+                only_scene = si + 1;
+        if (has_word(cmd, "span"))
+            mode_hi = 1;
+        if (has_word(cmd, "zline"))
+            mode_lo = 1;
     }
     port_timer_start();
     ipt = port_calibrate_ipt_milli();
@@ -94,6 +105,8 @@ int main(void)
         int mi;
         zs_status st;
         uint8_t *fb;
+        if (only_scene && si != only_scene - 1)
+            continue;
         if (need > free_bytes) {
             sh_printf("S %s %s skip need=%u free=%u\n", board, s->name, (unsigned)need,
                       (unsigned)free_bytes);
@@ -114,7 +127,7 @@ int main(void)
         }
         sh_printf("A %s %s arena=%u timing=%s\n", board, s->name, (unsigned)need,
                   fb ? "frame" : "rows");
-        for (mi = 0; mi < 2; mi++) {
+        for (mi = mode_lo; mi < mode_hi; mi++) {
             zs_visibility mode = mi ? ZS_MODE_ZLINE : ZS_MODE_SPAN;
             int f;
             for (f = 0; f < (quick ? 1 : BENCH_FRAMES); f++) {
@@ -196,7 +209,7 @@ int main(void)
             }
         }
     }
-    { /* the textured scene (bench_tex_frame): host == M4 == M0, and its cost */
+    if (!notex) { /* the textured scene (bench_tex_frame): host == M4 == M0, and its cost */
         zs_config cfg = bench_tex_config();
         size_t need = zs_arena_bytes(&cfg);
         int k;

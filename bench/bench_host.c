@@ -107,13 +107,16 @@ static int render_scene(const bench_scene *s, const zs_config *cfg, const zs_cam
                 use->frames_dropping++;
             if (print)
                 printf("R host %s %s %d sum=%08lx tris=%lu verts=%lu edges=%lu "
-                       "culled=%lu clipped=%lu dropped=%lu\n",
+                       "culled=%lu clipped=%lu dropped=%lu spans=%lu evals=%lu crossings=%lu "
+                       "drawn=%lu\n",
                        s->name, mode_name(mode), f, (unsigned long)sum,
                        (unsigned long)stt->tris_stored, (unsigned long)stt->verts_stored,
                        (unsigned long)stt->max_active_edges, (unsigned long)stt->tris_culled,
                        (unsigned long)stt->tris_clipped,
                        (unsigned long)(stt->tris_dropped + stt->verts_dropped +
-                                       stt->records_skipped));
+                                       stt->records_skipped),
+                       (unsigned long)stt->spans, (unsigned long)stt->depth_evals,
+                       (unsigned long)stt->crossings, (unsigned long)stt->tris_drawn);
             if (ppm)
                 ppm_write(ppm, s->name, mode_name(mode), f, img);
         }

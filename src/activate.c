@@ -228,6 +228,7 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     a->tri = ti;
     a->inside = 0;
     a->set_pos = 0;
+    a->cross = -1; /* zline.c: no row depth cached */
     a->flags = long_left ? ZS_ACT_LONG_LEFT : 0;
     a->y_end = (int16_t)zs_first_row(s[2]->y);
     if (r->priv.mode == ZS_MODE_SPAN)
@@ -238,8 +239,8 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     else
         short_edge = new_edge(r, ai, !long_left, s[1], s[2], y);
     a->y0 = (int16_t)y;
-    if (r->priv.mode == ZS_MODE_SPAN) {
-        /* the span walk makes the plane if it ever evaluates one */
+    if (r->priv.mode == ZS_MODE_SPAN || r->priv.mode == ZS_MODE_ZLINE) {
+        /* the span walk or the z-buffer line makes the plane if it ever evaluates one */
         a->flags |= ZS_ACT_LAZY;
     } else {
         zs_recip_init(&area2, cross);

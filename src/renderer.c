@@ -141,10 +141,9 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
     r->priv.in_set = carve(&cur, a * 2u);
     r->priv.active_free = carve(&cur, a * 2u);
     if (!(cfg->flags & ZS_CFG_NO_ZLINE)) {
-        /* span mode sorts edges in the idle z-buffer line: 2 keys a pixel */
-        void *line = carve(&cur, (size_t)cfg->width * 8u);
-        r->priv.zline_depth = line;
-        r->priv.sort_keys = line;
+        /* span mode sorts edges here: 2 keys a pixel (zline mode keeps
+         * owners only, not depths) */
+        r->priv.sort_keys = carve(&cur, (size_t)cfg->width * 8u);
         r->priv.zline_owner = carve(&cur, (size_t)cfg->width * 2u);
     }
     if (cfg->flags & ZS_CFG_MONO) {

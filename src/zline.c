@@ -1,8 +1,11 @@
 /* SPDX-License-Identifier: MIT */
-/* Scanline z-buffer for one row: one line of depth and owner, each
- * triangle's span walked with z += dz/dx per pixel, then the row written from
- * the owners. Exact for any input at the cost of a depth test per covered
- * pixel; the reference the span mode is tested against. */
+/* Scanline z-buffer for one row: a line of owners, each triangle's span
+ * tested pixel by pixel against the owner's depth with z += dz/dx per pixel
+ * on both planes, then the row written from the owners. Exact for any input
+ * at the cost of a depth test per overlapped pixel; the reference the span
+ * mode is tested against. A pixel's depth is its owner's plane there, so it
+ * is not stored: columns no span reached yet are taken without a test, and
+ * a plane is made only for triangles that meet another one. */
 #include "zs_internal.h"
 
 /* First column from x on (up to x1) not owned by o. The owner line is 8-byte
@@ -61,39 +64,72 @@ static void write_runs(zs_renderer *r, int32_t y, const uint16_t *owner, uint8_t
     r->stats.pixels_shaded += (uint32_t)w;
 }
 
-static void clear(int64_t *depth, uint16_t *owner, int32_t x0, int32_t x1)
+/* Owners of columns [x0, x1) := o. The line is 8-byte aligned: pairs of
+ * owners are stored as words. */
+static void set_owner(uint16_t *owner, int32_t x0, int32_t x1, uint16_t o)
 {
-    int32_t x;
-    for (x = x0; x < x1; x++) {
-        depth[x] = INT64_MAX;
-        owner[x] = ZS_NONE;
-    }
+#ifdef ZS_WORD_STORES
+    zs_word_alias *wp;
+    uint32_t pair = (uint32_t)o * 0x10001u;
+    if ((x0 & 1) && x0 < x1)
+        owner[x0++] = o;
+    for (wp = (zs_word_alias *)(void *)(owner + x0); x0 + 1 < x1; x0 += 2)
+        *wp++ = pair;
+#endif
+    for (; x0 < x1; x0++)
+        owner[x0] = o;
 }
 
-/* Columns [x0, x1) that no span of this row has reached yet: taken without a
- * test (what a cleared line would give). z: depth at x0. */
-static void take(int64_t *depth, uint16_t *owner, int32_t x0, int32_t x1, int64_t z, int64_t dz,
+/* Depth (Q40) of a at column 0 of row y, its plane made first if nothing
+ * has needed it yet; kept in a->zcur for the rest of the row (a->cross
+ * holds the row it is for: the span walk's fields are free in this mode). */
+static int64_t row_depth(zs_renderer *r, zs_active *a, int32_t y)
+{
+    if (a->cross != y) {
+        if (a->flags & ZS_ACT_LAZY)
+            zs_make_plane(r, a, y);
+        a->zcur = zs_row_depth(a, y);
+        a->cross = y;
+    }
+    return a->zcur;
+}
+
+/* Columns [x0, x1) already reached, tested pixel by pixel against the owner:
+ * nearer wins; at equal depth the earlier record (exact ties). A pixel's
+ * stored depth is its owner's plane at that column (the owner won there with
+ * that depth), so the line keeps owners only: along a run of one owner the
+ * difference of the two depths is stepped (d += dz - dz_owner per pixel,
+ * exact), started afresh where the owner changes. */
+static void test(zs_renderer *r, int32_t y, uint16_t *owner, int32_t x0, int32_t x1,
                  uint16_t ai)
 {
-    int32_t x;
-    for (x = x0; x < x1; x++, z += dz) {
-        depth[x] = z;
-        owner[x] = ai;
-    }
-}
-
-/* Columns [x0, x1) already reached: nearer wins; at equal depth the earlier
- * record (exact ties). */
-static void test(int64_t *depth, uint16_t *owner, const zs_active *act, int32_t x0, int32_t x1,
-                 int64_t z, int64_t dz, uint16_t ai)
-{
-    uint16_t tri = act[ai].tri; /* a local: the depth stores could alias the record */
-    int32_t x;
-    for (x = x0; x < x1; x++, z += dz) {
-        if (z < depth[x] || (z == depth[x] && tri < act[owner[x]].tri)) {
-            depth[x] = z;
-            owner[x] = ai;
+    zs_active *act = r->priv.active;
+    zs_active *n = &act[ai];
+    const int64_t zrow = row_depth(r, n, y); /* makes n's plane first */
+    const int64_t dz = n->zdx;
+    const uint16_t tri = n->tri;
+    int32_t x = x0;
+    while (x < x1) {
+        uint16_t o = owner[x];
+        zs_active *b;
+        int64_t d, dd;
+        if (o == ZS_NONE) { /* a cleared gap: taken */
+            do
+                owner[x++] = ai;
+            while (x < x1 && owner[x] == ZS_NONE);
+            continue;
         }
+        b = &act[o];
+        /* d < 0 or (d == 0 and the tie goes to a): d - tie < 0 (integers) */
+        d = zrow - row_depth(r, b, y) - (tri < b->tri);
+        dd = dz - b->zdx;
+        d += zs_mul64_small(dd, x);
+        do {
+            if (d < 0)
+                owner[x] = ai;
+            x++;
+            d += dd;
+        } while (x < x1 && owner[x] == o);
     }
 }
 
@@ -101,8 +137,7 @@ void zs_zline_row(zs_renderer *r, int y, uint8_t *row)
 {
     const zs_edge *edges = r->priv.edges;
     const uint16_t *ael = r->priv.ael;
-    const zs_active *act = r->priv.active;
-    int64_t *depth = r->priv.zline_depth;
+    zs_active *act = r->priv.active;
     uint16_t *owner = r->priv.zline_owner; /* active triangle, or ZS_NONE */
     int32_t w = r->cfg.width, x0 = w, x1 = w; /* [x0, x1): columns reached */
     uint32_t evals = 0;
@@ -111,7 +146,6 @@ void zs_zline_row(zs_renderer *r, int y, uint8_t *row)
         const zs_edge *e = &edges[ael[i]];
         uint16_t ai = e->lead;
         int32_t xl, xr, a, b;
-        int64_t z, dz;
         if (ai == ZS_NONE)
             continue;
         xl = zs_clampi(e->x, 0, w);
@@ -119,10 +153,8 @@ void zs_zline_row(zs_renderer *r, int y, uint8_t *row)
         if (xl >= xr)
             continue;
         evals += (uint32_t)(xr - xl);
-        dz = act[ai].zdx;
-        z = zs_row_depth(&act[ai], y) + zs_mul64_small(dz, xl);
         if (x0 == w) { /* the row's first span */
-            take(depth, owner, xl, xr, z, dz, ai);
+            set_owner(owner, xl, xr, ai);
             x0 = xl;
             x1 = xr;
             continue;
@@ -133,17 +165,17 @@ void zs_zline_row(zs_renderer *r, int y, uint8_t *row)
         a = xl > x0 ? xl : x0;
         b = xr < x1 ? xr : x1;
         if (a < b)
-            test(depth, owner, act, a, b, z + zs_mul64_small(dz, a - xl), dz, ai);
+            test(r, y, owner, a, b, ai);
         if (xl < x0) {
             b = xr < x0 ? xr : x0;
-            take(depth, owner, xl, b, z, dz, ai);
-            clear(depth, owner, b, x0);
+            set_owner(owner, xl, b, ai);
+            set_owner(owner, b, x0, ZS_NONE);
             x0 = xl;
         }
         if (xr > x1) {
             a = xl > x1 ? xl : x1;
-            clear(depth, owner, x1, a);
-            take(depth, owner, a, xr, z + zs_mul64_small(dz, a - xl), dz, ai);
+            set_owner(owner, x1, a, ZS_NONE);
+            set_owner(owner, a, xr, ai);
             x1 = xr;
         }
     }

@@ -90,7 +90,7 @@ typedef struct zs_active_color {
 #define ZS_ACT_GOURAUD 0x01u   /* colour varies across the triangle */
 #define ZS_ACT_LONG_LEFT 0x02u /* the long edge is its left edge */
 #define ZS_ACT_STEEP 0x04u     /* needle: zrow anchored exactly on every row */
-#define ZS_ACT_LAZY 0x08u      /* span mode: depth plane not made yet (most
+#define ZS_ACT_LAZY 0x08u      /* span, zline: depth plane not made yet (most
                                   triangles are decided by their depth range
                                   and never need it); zs_make_plane makes it */
 

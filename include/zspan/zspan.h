@@ -583,10 +583,10 @@ typedef struct zs_renderer_private {
     struct zs_active_color *acolor; /* their colour planes; NULL if flat only */
     uint16_t *in_set;               /* span mode: the in-polygon set */
     uint16_t *active_free;          /* free active triangles */
-    int64_t *zline_depth;           /* z-buffer line; NULL with ZS_CFG_NO_ZLINE  */
-    uint32_t *sort_keys;            /* span mode: edge sort keys, in the
-                                       z-buffer line's storage (idle then) */
-    uint16_t *zline_owner;          /* triangle owning each z-buffer pixel */
+    uint32_t *sort_keys;            /* span mode: edge sort keys (8 B a column;
+                                       NULL with ZS_CFG_NO_ZLINE) */
+    uint16_t *zline_owner;          /* zline mode: the triangle owning each pixel
+                                       (its depth there is the owner's plane) */
     uint8_t *mono_grey;             /* ZS_CFG_MONO: the row in GRAY8 before dithering */
     int16_t *mono_err;              /* ZS_CFG_MONO: diffusion error for the next row */
     uint16_t *line_ids[2];          /* ZS_CFG_LINES: this row's and the next row's ids */

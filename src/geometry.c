@@ -474,11 +474,24 @@ static ZS_NOINLINE void setup_inside(draw_ctx *c, uint16_t base, uint32_t tag_ba
     } while (0)
 #endif
 
+/* Are all indices below vcount (>= 1)? (vcount - 1 - index) wraps past 2^31
+ * exactly when an index is too large: one subtraction and one OR each, no
+ * branch per index. */
+static ZS_NOINLINE int indices_valid(const uint16_t *idx, uint32_t tris, uint32_t vcount)
+{
+    const uint16_t *const end = idx + 3u * tris;
+    const uint32_t last = vcount - 1u;
+    uint32_t bad = 0;
+    for (; idx != end; idx += 3)
+        bad |= (last - idx[0]) | (last - idx[1]) | (last - idx[2]);
+    return (bad >> 31) == 0;
+}
+
 zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
 {
     draw_ctx c;
     zs_vert *pool;
-    uint32_t i, t, t_end, vfit, room, tag0, tag_base;
+    uint32_t t, t_end, vfit, room, tag0, tag_base;
     int tag_fast, inside;
     uint16_t base, first;
     if (!r || !m)
@@ -487,9 +500,8 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
         return ZS_ERR_STATE;
     if (!m->positions || !m->indices || m->scale == 0 || m->vertex_count == 0)
         return ZS_ERR_MESH;
-    for (i = 0; i < 3u * m->triangle_count; i++)
-        if (m->indices[i] >= m->vertex_count)
-            return ZS_ERR_INDEX;
+    if (!indices_valid(m->indices, m->triangle_count, m->vertex_count))
+        return ZS_ERR_INDEX;
     c.tex_slot = 0;
     if (m->uvs || m->texture) { /* texture.c checks it and takes a slot */
         zs_status st = zs_tex_draw(r, m, &c.tex_slot);

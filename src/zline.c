@@ -64,20 +64,11 @@ static void write_runs(zs_renderer *r, int32_t y, const uint16_t *owner, uint8_t
     r->stats.pixels_shaded += (uint32_t)w;
 }
 
-/* Owners of columns [x0, x1) := o. The line is 8-byte aligned: pairs of
- * owners are stored as words. */
+/* Owners of columns [x0, x1) := o: a 2-byte fill (the pair holds o twice,
+ * as zs_fill2 wants; its halves are equal, so byte order does not matter). */
 static void set_owner(uint16_t *owner, int32_t x0, int32_t x1, uint16_t o)
 {
-#ifdef ZS_WORD_STORES
-    zs_word_alias *wp;
-    uint32_t pair = (uint32_t)o * 0x10001u;
-    if ((x0 & 1) && x0 < x1)
-        owner[x0++] = o;
-    for (wp = (zs_word_alias *)(void *)(owner + x0); x0 + 1 < x1; x0 += 2)
-        *wp++ = pair;
-#endif
-    for (; x0 < x1; x0++)
-        owner[x0] = o;
+    zs_fill2((uint8_t *)(void *)(owner + x0), x1 - x0, (uint32_t)o * 0x10001u);
 }
 
 /* Depth (Q40) of a at column 0 of row y, its plane made first if nothing

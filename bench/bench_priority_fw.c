@@ -70,7 +70,8 @@ int main(void)
             uint32_t peak_tris = 0, peak_verts = 0, peak_edges = 0;
             const char *mname = pri ? "priority-bsp" : "span";
             int f;
-            cfg.flags = ZS_CFG_FLAT_ONLY | ZS_CFG_NO_ZLINE;
+            /* priority frames keep no depth planes */
+            cfg.flags = ZS_CFG_FLAT_ONLY | ZS_CFG_NO_ZLINE | (pri ? ZS_CFG_PRIORITY_ONLY : 0u);
             need = zs_arena_bytes(&cfg);
             at = (need + 7u) & ~(size_t)7u;
             if (need == 0 || at + (size_t)BENCH_W * BENCH_H * 2 > free_bytes) {
@@ -120,7 +121,7 @@ int main(void)
                                                  (uint16_t)(peak_tris ? peak_tris : 1),
                                                  (uint16_t)(peak_verts ? peak_verts : 1),
                                                  (uint16_t)(peak_edges > 2 ? peak_edges : 2));
-                pk.flags = ZS_CFG_FLAT_ONLY | ZS_CFG_NO_ZLINE;
+                pk.flags = ZS_CFG_FLAT_ONLY | ZS_CFG_NO_ZLINE | (pri ? ZS_CFG_PRIORITY_ONLY : 0u);
                 sh_printf("A %s %s %s arena=%lu tris=%lu verts=%lu edges=%lu\n", board, s->name,
                           mname, (unsigned long)zs_arena_bytes(&pk), (unsigned long)peak_tris,
                           (unsigned long)peak_verts, (unsigned long)peak_edges);

@@ -88,8 +88,8 @@ static int64_t min3_64(int64_t a, int64_t b, int64_t c)
 
 /* Depth plane of the triangle s (canonical order, sorted by y), origin at
  * the pixel centre (ox, oy) next to s[0]; marks it steep where needed. */
-static ZS_INLINE_ALWAYS void depth_plane(zs_active *a, const zs_vert *s[3], const zs_recip *area2, int32_t ox,
-                        int32_t oy, int32_t y)
+static ZS_INLINE_ALWAYS void depth_plane(zs_active *a, zs_active_plane *p, const zs_vert *s[3],
+                                         const zs_recip *area2, int32_t ox, int32_t oy, int32_t y)
 {
     int64_t dx1 = (int64_t)s[1]->x - s[0]->x, dy1 = (int64_t)s[1]->y - s[0]->y;
     int64_t dx2 = (int64_t)s[2]->x - s[0]->x, dy2 = (int64_t)s[2]->y - s[0]->y;
@@ -99,25 +99,25 @@ static ZS_INLINE_ALWAYS void depth_plane(zs_active *a, const zs_vert *s[3], cons
     int32_t z1 = (int32_t)dz1, z2 = (int32_t)dz2;
     a->zdx = zs_recip_muldiv(area2, zs_smul32(z1, (int32_t)dy2) - zs_smul32(z2, (int32_t)dy1), 14,
                              ZS_DEPTH_GRADIENT_LIMIT);
-    a->zdy = zs_recip_muldiv(area2, zs_smul32(z2, (int32_t)dx1) - zs_smul32(z1, (int32_t)dx2), 14,
+    p->zdy = zs_recip_muldiv(area2, zs_smul32(z2, (int32_t)dx1) - zs_smul32(z1, (int32_t)dx2), 14,
                              ZS_DEPTH_GRADIENT_LIMIT);
     /* Below 2^32 each, the spread is under 2 * 2^28 * 2^17 = 2^46: the
      * common case needs no products. */
-    if ((uint64_t)(abs64(a->zdx) | abs64(a->zdy)) >= ((uint64_t)1 << 32)) {
+    if ((uint64_t)(abs64(a->zdx) | abs64(p->zdy)) >= ((uint64_t)1 << 32)) {
         /* extents in 1/16 px (<= 2^17), plus a pixel for the centres around */
         w16 = max3_64(0, dx1, dx2) - min3_64(0, dx1, dx2) + 16;
         h16 = dy2 + 16;
         /* gradients <= 2^48: at >> 4 each product stays below 2^62 */
-        if ((abs64(a->zdx) >> 4) * w16 + (abs64(a->zdy) >> 4) * h16 >= ZS_STEEP_SPREAD)
+        if ((abs64(a->zdx) >> 4) * w16 + (abs64(p->zdy) >> 4) * h16 >= ZS_STEEP_SPREAD)
             a->flags |= ZS_ACT_STEEP;
     }
     /* depth at the origin pixel centre, from vertex 0 (less than a pixel away) */
     z0 = (int64_t)s[0]->z * 1024 +
          zs_asr64(zs_mul64_small(a->zdx, 16 * ox + 8 - s[0]->x) +
-                      zs_mul64_small(a->zdy, 16 * oy + 8 - s[0]->y),
+                      zs_mul64_small(p->zdy, 16 * oy + 8 - s[0]->y),
                   4);
     /* |ox|, |oy| < 2^13 (the guard band), gradients <= 2^48 */
-    a->zrow = z0 + zs_mul64_small(a->zdy, y - oy) - zs_mul64_small(a->zdx, ox);
+    p->zrow = z0 + zs_mul64_small(p->zdy, y - oy) - zs_mul64_small(a->zdx, ox);
     a->y0 = (int16_t)y;
 }
 
@@ -159,7 +159,8 @@ static void sort_canonical(const zs_renderer *r, const zs_tri *t, const zs_vert 
 #undef ZS_AFTER
 }
 
-void zs_anchor_depth(const zs_renderer *r, zs_active *a, int32_t xa, int32_t y)
+void zs_anchor_depth(const zs_renderer *r, const zs_active *a, zs_active_plane *pl, int32_t xa,
+                     int32_t y)
 {
     const zs_vert *s[3];
     zs_vert p; /* the pixel centre: 0 <= xa, y <= ZS_MAX_DIM, so it fits int16 */
@@ -184,7 +185,7 @@ void zs_anchor_depth(const zs_renderer *r, zs_active *a, int32_t xa, int32_t y)
         z += zs_muldiv64(((int64_t)s[1]->z - s[0]->z) * 1024, l1, d, 1) +
              zs_muldiv64(((int64_t)s[2]->z - s[0]->z) * 1024, l2, d, 1);
     /* stored for row y0: row y's constant comes back exactly */
-    a->zrow = z - zs_mul64_small(a->zdx, xa) - zs_mul64_small(a->zdy, y - a->y0);
+    pl->zrow = z - zs_mul64_small(a->zdx, xa) - zs_mul64_small(pl->zdy, y - a->y0);
 }
 
 /* Takes an edge from the pool for a -> b, owned by ai on one side, and
@@ -242,13 +243,14 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     if (r->priv.mode == ZS_MODE_SPAN || r->priv.mode == ZS_MODE_ZLINE) {
         /* the span walk or the z-buffer line makes the plane if it ever evaluates one */
         a->flags |= ZS_ACT_LAZY;
-    } else {
+    } else if (r->priv.mode != ZS_MODE_PRIORITY) { /* priority: decided by record order */
+        zs_active_plane *pl = &r->priv.aplane[ai];
         zs_recip_init(&area2, cross);
         /* the depth plane from the canonical order: equal triangles, equal planes */
-        depth_plane(a, s, &area2, zs_asr32(s[0]->x, 4), zs_asr32(s[0]->y, 4), y);
+        depth_plane(a, pl, s, &area2, zs_asr32(s[0]->x, 4), zs_asr32(s[0]->y, 4), y);
         if (a->flags & ZS_ACT_STEEP) {
             r->priv.steep = 1;
-            zs_anchor_depth(r, a,
+            zs_anchor_depth(r, a, pl,
                             zs_clampi(r->priv.edges[long_left ? long_edge : short_edge].x,
                                       0, r->cfg.width),
                             y);
@@ -273,20 +275,21 @@ void zs_make_plane(zs_renderer *r, zs_active *a, int32_t y)
 {
     const zs_vert *s[3];
     zs_recip area2;
+    const uint16_t ai = (uint16_t)(a - r->priv.active);
+    zs_active_plane *pl = &r->priv.aplane[ai];
     sort_canonical(r, &r->priv.tris[a->tri], s);
     zs_recip_init(&area2, zs_area2_inline(s[0], s[1], s[2]));
-    depth_plane(a, s, &area2, zs_asr32(s[0]->x, 4), zs_asr32(s[0]->y, 4), a->y0);
+    depth_plane(a, pl, s, &area2, zs_asr32(s[0]->x, 4), zs_asr32(s[0]->y, 4), a->y0);
     a->flags &= (uint8_t)~ZS_ACT_LAZY;
     if (a->flags & ZS_ACT_STEEP) {
         /* anchored on this row at its left edge, as every row is from here
          * on (found in the list: needles are rare) */
-        const uint16_t ai = (uint16_t)(a - r->priv.active);
         int i;
         r->priv.steep = 1;
         for (i = 0; i < r->priv.n_ael; i++) {
             const zs_edge *e = &r->priv.edges[r->priv.ael[i]];
             if (e->lead == ai) {
-                zs_anchor_depth(r, a, zs_clampi(e->x, 0, r->cfg.width), y);
+                zs_anchor_depth(r, a, pl, zs_clampi(e->x, 0, r->cfg.width), y);
                 break;
             }
         }
@@ -302,7 +305,8 @@ void zs_continue_edge(zs_renderer *r, uint16_t ai, int32_t y)
     sort_canonical(r, &r->priv.tris[a->tri], s);
     ei = new_edge(r, ai, left_side, s[1], s[2], y);
     if (left_side && (a->flags & ZS_ACT_STEEP))
-        zs_anchor_depth(r, a, zs_clampi(r->priv.edges[ei].x, 0, r->cfg.width), y);
+        zs_anchor_depth(r, a, &r->priv.aplane[ai], zs_clampi(r->priv.edges[ei].x, 0, r->cfg.width),
+                        y);
 }
 
 /* Warnock mode and picking (centre.c) evaluate records without activating
@@ -313,8 +317,8 @@ ZS_COLD void zs_canonical_vertices(const zs_renderer *r, const zs_tri *t, const 
     sort_canonical(r, t, v);
 }
 
-ZS_COLD void zs_record_depth_plane(zs_active *a, const zs_vert *s[3], const zs_recip *area2, int32_t ox,
-                           int32_t oy, int32_t y)
+ZS_COLD void zs_record_depth_plane(zs_active *a, zs_active_plane *p, const zs_vert *s[3],
+                                   const zs_recip *area2, int32_t ox, int32_t oy, int32_t y)
 {
-    depth_plane(a, s, area2, ox, oy, y);
+    depth_plane(a, p, s, area2, ox, oy, y);
 }

@@ -119,7 +119,7 @@ int32_t zs_rec_right_col(const zs_rec_view *v, int32_t y)
 }
 
 void zs_rec_planes(const zs_renderer *r, uint16_t ti, const zs_rec_view *v, int32_t y,
-                   zs_active *a, zs_active_color *ac, int shade)
+                   zs_active *a, zs_active_plane *p, zs_active_color *ac, int shade)
 {
     const zs_tri *t = &r->priv.tris[ti];
     const zs_vert *pool = r->priv.verts;
@@ -134,7 +134,7 @@ void zs_rec_planes(const zs_renderer *r, uint16_t ti, const zs_rec_view *v, int3
     a->flags = v->long_left ? ZS_ACT_LONG_LEFT : 0;
     a->y_end = (int16_t)v->row_end;
     zs_recip_init(&area2, zs_area2_inline(s[0], s[1], s[2]));
-    zs_record_depth_plane(a, s, &area2, zs_asr32(s[0]->x, 4), zs_asr32(s[0]->y, 4), y);
+    zs_record_depth_plane(a, p, s, &area2, zs_asr32(s[0]->x, 4), zs_asr32(s[0]->y, 4), y);
     if (!shade)
         return; /* depth only (picking) */
     pv[0] = &pool[t->v[0]];
@@ -144,12 +144,12 @@ void zs_rec_planes(const zs_renderer *r, uint16_t ti, const zs_rec_view *v, int3
     zs_shade_setup(r, a, ac, t, pv, zs_asr32(pv[0]->x, 4), zs_asr32(pv[0]->y, 4), &area2, y);
 }
 
-int64_t zs_rec_depth(const zs_renderer *r, const zs_rec_view *v, zs_active *a, int32_t x,
-                     int32_t y)
+int64_t zs_rec_depth(const zs_renderer *r, const zs_rec_view *v, const zs_active *a,
+                     zs_active_plane *p, int32_t x, int32_t y)
 {
     if (a->flags & ZS_ACT_STEEP) /* the walk anchors it at its left edge on every row */
-        zs_anchor_depth(r, a, zs_clampi(zs_rec_left_col(v, y), 0, r->cfg.width), y);
-    return zs_row_depth(a, y) + zs_mul64_small(a->zdx, x);
+        zs_anchor_depth(r, a, p, zs_clampi(zs_rec_left_col(v, y), 0, r->cfg.width), y);
+    return zs_row_depth(p, a, y) + zs_mul64_small(a->zdx, x);
 }
 
 void zs_rec_count_tall(zs_renderer *r)

@@ -25,12 +25,13 @@ zs_status zs_pick(zs_renderer *r, int x, int y, zs_pick_hit *hit)
         for (ti = r->priv.buckets[b]; ti != ZS_NONE; ti = tris[ti].next) {
             zs_rec_view v;
             zs_active a;
+            zs_active_plane pl;
             int64_t z;
             zs_rec_view_make(r, ti, &v);
             if (!zs_rec_covers(&v, 16 * x + 8, 16 * y + 8))
                 continue;
-            zs_rec_planes(r, ti, &v, v.row0, &a, 0, 0);
-            z = zs_rec_depth(r, &v, &a, x, y);
+            zs_rec_planes(r, ti, &v, v.row0, &a, &pl, 0, 0);
+            z = zs_rec_depth(r, &v, &a, &pl, x, y);
             if (best == ZS_PICK_NONE || z < best_z || (z == best_z && ti < best)) {
                 best = ti;
                 best_z = z;

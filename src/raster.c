@@ -209,7 +209,8 @@ static void anchor_steep(zs_renderer *r, int32_t next)
     for (i = 0; i < r->priv.n_ael; i++) {
         const zs_edge *e = &edges[ael[i]];
         if (e->lead != ZS_NONE && (act[e->lead].flags & ZS_ACT_STEEP))
-            zs_anchor_depth(r, &act[e->lead], zs_clampi(e->x, 0, r->cfg.width), next);
+            zs_anchor_depth(r, &act[e->lead], &r->priv.aplane[e->lead],
+                            zs_clampi(e->x, 0, r->cfg.width), next);
     }
 }
 

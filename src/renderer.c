@@ -27,8 +27,11 @@ static zs_status check_config(const zs_config *c)
         c->max_active_edges > ZS_MAX_ACTIVE_EDGES)
         return ZS_ERR_CAPACITY;
     if (c->flags & ~(uint16_t)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES |
-                               ZS_CFG_PRIORITY | ZS_CFG_TEXTURE | ZS_CFG_ABUFFER))
+                               ZS_CFG_PRIORITY | ZS_CFG_TEXTURE | ZS_CFG_ABUFFER |
+                               ZS_CFG_PRIORITY_ONLY))
         return ZS_ERR_ARGUMENT;
+    if ((c->flags & ZS_CFG_PRIORITY_ONLY) && (c->flags & ZS_CFG_ABUFFER))
+        return ZS_ERR_ARGUMENT; /* the resolve decides by depth */
     if ((c->flags & ZS_CFG_TEXTURE) && (c->flags & ZS_CFG_ABUFFER))
         return ZS_ERR_ARGUMENT; /* the resolve's fragments carry no texture (yet) */
     return ZS_OK;
@@ -47,6 +50,7 @@ static uint32_t arena_bytes32(const zs_config *c)
         ROUND8_32((uint32_t)c->max_triangles * ZS_TRIANGLE_BYTES) +
         ROUND8_32((uint32_t)c->height * 2u) + ROUND8_32(e * ZS_EDGE_BYTES) +
         2u * ROUND8_32(e * 2u) + ROUND8_32(a * ZS_ACTIVE_BYTES) +
+        ((c->flags & ZS_CFG_PRIORITY_ONLY) ? 0u : ROUND8_32(a * ZS_ACTIVE_PLANE_BYTES)) +
         (flat && !(c->flags & ZS_CFG_TEXTURE) ? 0u : ROUND8_32(a * ZS_ACTIVE_COLOR_BYTES)) +
         2u * ROUND8_32(a * 2u) +
         ((c->flags & ZS_CFG_NO_ZLINE)
@@ -136,6 +140,8 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
     r->priv.ael = carve(&cur, e * 2u);
     r->priv.edge_free = carve(&cur, e * 2u);
     r->priv.active = carve(&cur, a * sizeof(zs_active));
+    r->priv.aplane =
+        (cfg->flags & ZS_CFG_PRIORITY_ONLY) ? 0 : carve(&cur, a * sizeof(zs_active_plane));
     /* textured fills are reached through the colour planes' fill */
     r->priv.acolor = flat && !(cfg->flags & ZS_CFG_TEXTURE) ? 0 : carve(&cur, a * sizeof(zs_active_color));
     r->priv.in_set = carve(&cur, a * 2u);
@@ -209,6 +215,8 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
         return ZS_ERR_MODE;
     if (mode == ZS_MODE_ZLINE && (r->cfg.flags & ZS_CFG_NO_ZLINE))
         return ZS_ERR_MODE;
+    if (mode != ZS_MODE_PRIORITY && (r->cfg.flags & ZS_CFG_PRIORITY_ONLY))
+        return ZS_ERR_MODE; /* no depth planes */
     if (cam->has_view != 1 || cam->has_projection != 1)
         return ZS_ERR_CAMERA;
     if (cam->fov_deg <= 0 || cam->fov_deg >= ZS_FX(180))

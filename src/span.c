@@ -25,11 +25,19 @@
  * store to a record). The out-of-line helpers below get what they need as
  * arguments and pass the nearest crossing back through r->priv.min_cross. */
 
-static int64_t depth_at(zs_renderer *r, zs_active *a, int32_t x, int32_t y)
+/* The depth plane of a (same index in the parallel array). */
+static inline zs_active_plane *plane_of(const zs_renderer *r, const zs_active *a)
+{
+    return &r->priv.aplane[a - r->priv.active];
+}
+
+/* Depth of a (plane p) at column x of row y, the plane made first if lazy. */
+static ZS_INLINE_ALWAYS int64_t depth_at(zs_renderer *r, zs_active *a, const zs_active_plane *p,
+                                         int32_t x, int32_t y)
 {
     if (a->flags & ZS_ACT_LAZY)
         zs_make_plane(r, a, y);
-    return zs_row_depth(a, y) + zs_mul64_small(a->zdx, x);
+    return zs_row_depth(p, a, y) + zs_mul64_small(a->zdx, x);
 }
 
 /* Does (za, a) win over (zb, b)? Nearer first, then the earlier record. */
@@ -133,6 +141,7 @@ static ZS_NOINLINE zs_active *retop(const walk_ctx *w, int ns, int32_t x)
 {
     zs_renderer *r = w->r;
     zs_active *act = r->priv.active;
+    zs_active_plane *pl = r->priv.aplane;
     const uint16_t *set = r->priv.in_set;
     uint16_t others_lo;
     zs_active *best = range_top(act, set, ns, &others_lo);
@@ -148,10 +157,12 @@ static ZS_NOINLINE zs_active *retop(const walk_ctx *w, int ns, int32_t x)
     }
     for (k = 0; k < ns; k++) {
         zs_active *a = &act[set[k]];
-        a->zcur = depth_at(r, a, x, y);
-        if (!best || nearer(a->zcur, a, bz, best)) {
+        zs_active_plane *p = &pl[set[k]];
+        int64_t z = depth_at(r, a, p, x, y);
+        p->zcur = z;
+        if (!best || nearer(z, a, bz, best)) {
             best = a;
-            bz = a->zcur;
+            bz = z;
         }
     }
     r->stats.depth_evals += (uint32_t)ns;
@@ -162,7 +173,8 @@ static ZS_NOINLINE zs_active *retop(const walk_ctx *w, int ns, int32_t x)
             continue;
         if (a->zlo < others_lo)
             others_lo = a->zlo;
-        a->cross = always_nearer(best, a) ? NO_CROSS : overtake(r, a, best, x, a->zcur, bz);
+        a->cross = always_nearer(best, a) ? NO_CROSS
+                                          : overtake(r, a, best, x, pl[set[k]].zcur, bz);
         if (a->cross < min_cross)
             min_cross = a->cross;
     }
@@ -204,7 +216,8 @@ static ZS_NOINLINE int32_t next_cross(const zs_renderer *r, int ns, const zs_act
 static ZS_NOINLINE int enter_vs_top(const walk_ctx *w, zs_active *a, zs_active *top,
                                     int32_t x)
 {
-    int64_t za = depth_at(w->r, a, x, w->y), zt = depth_at(w->r, top, x, w->y);
+    int64_t za = depth_at(w->r, a, plane_of(w->r, a), x, w->y);
+    int64_t zt = depth_at(w->r, top, plane_of(w->r, top), x, w->y);
     w->r->stats.depth_evals += 2;
     if (nearer(za, a, zt, top))
         return 1;

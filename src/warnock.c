@@ -78,8 +78,8 @@ static int classify(const zs_rec_view *v, const zs_window *w)
 }
 
 /* Least and largest depth the record can show at the window's centres. */
-static void depth_bounds(const zs_rec_view *v, const zs_active *a, const zs_window *w,
-                         int64_t *lo, int64_t *hi)
+static void depth_bounds(const zs_rec_view *v, const zs_active *a, const zs_active_plane *p,
+                         const zs_window *w, int64_t *lo, int64_t *hi)
 {
     if (a->flags & ZS_ACT_STEEP) {
         uint32_t z0 = v->s[0]->z, z1 = v->s[1]->z, z2 = v->s[2]->z;
@@ -89,7 +89,7 @@ static void depth_bounds(const zs_rec_view *v, const zs_active *a, const zs_wind
         *lo = (int64_t)zmin * 1024 - ZS_STEEP_SLACK;
         *hi = (int64_t)zmax * 1024 + ZS_STEEP_SLACK;
     } else {
-        int64_t top = zs_row_depth(a, w->y0), bottom = zs_row_depth(a, w->y1 - 1);
+        int64_t top = zs_row_depth(p, a, w->y0), bottom = zs_row_depth(p, a, w->y1 - 1);
         int64_t left = zs_mul64_small(a->zdx, w->x0), right = zs_mul64_small(a->zdx, w->x1 - 1);
         int64_t rmin = top < bottom ? top : bottom, rmax = top < bottom ? bottom : top;
         *lo = rmin + (left < right ? left : right);
@@ -153,7 +153,7 @@ static void decide_pixel(const zs_band *b, const zs_window *w)
         view_of(r, &act[i], &v);
         if (!zs_rec_covers(&v, X, Y))
             continue;
-        z = zs_rec_depth(r, &v, &act[i], w->x0, w->y0);
+        z = zs_rec_depth(r, &v, &act[i], &r->priv.aplane[i], w->x0, w->y0);
         r->stats.depth_evals++;
         if (best < 0 || z < best_z || (z == best_z && act[i].tri < act[best].tri)) {
             best = i;
@@ -179,7 +179,7 @@ static int in_front(const zs_band *b, const zs_window *w, int f, int64_t f_hi)
         view_of(r, &act[i], &v);
         if (classify(&v, w) == ZS_WIN_DISJOINT)
             continue;
-        depth_bounds(&v, &act[i], w, &lo, &hi);
+        depth_bounds(&v, &act[i], &r->priv.aplane[i], w, &lo, &hi);
         if (!(f_hi < lo || (f_hi == lo && act[f].tri < act[i].tri)))
             return 0;
     }
@@ -207,7 +207,7 @@ static int resolve(const zs_band *b, const zs_window *w)
         one_view = v;
         if (kind == ZS_WIN_SURROUNDING) {
             int64_t lo, hi;
-            depth_bounds(&v, &act[i], w, &lo, &hi);
+            depth_bounds(&v, &act[i], &r->priv.aplane[i], w, &lo, &hi);
             if (front < 0 || hi < front_hi || (hi == front_hi && act[i].tri < act[front].tri)) {
                 front = i;
                 front_hi = hi;
@@ -293,7 +293,7 @@ static uint32_t gather(zs_renderer *r, int32_t y, int32_t n, int fill_pool)
                     r->stats.records_skipped++; /* capacity policy: left out of the band */
                     continue;
                 }
-                zs_rec_planes(r, ti, &v, v.row0, &r->priv.active[count],
+                zs_rec_planes(r, ti, &v, v.row0, &r->priv.active[count], &r->priv.aplane[count],
                               r->priv.acolor ? &r->priv.acolor[count] : 0, 1);
                 if (b >= y || first) /* counted in the first band it reaches */
                     r->stats.tris_drawn++;

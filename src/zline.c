@@ -71,18 +71,27 @@ static void set_owner(uint16_t *owner, int32_t x0, int32_t x1, uint16_t o)
     zs_fill2((uint8_t *)(void *)(owner + x0), x1 - x0, (uint32_t)o * 0x10001u);
 }
 
-/* Depth (Q40) of a at column 0 of row y, its plane made first if nothing
- * has needed it yet; kept in a->zcur for the rest of the row (a->cross
- * holds the row it is for: the span walk's fields are free in this mode). */
-static int64_t row_depth(zs_renderer *r, zs_active *a, int32_t y)
+/* Depth (Q40) of active triangle ai at column 0 of row y, its plane made
+ * first if nothing has needed it yet; kept in zcur for the rest of the row
+ * (cross holds the row it is for: the span walk's fields are free in this
+ * mode). */
+static int64_t new_row_depth(zs_renderer *r, uint16_t ai, int32_t y)
 {
-    if (a->cross != y) {
-        if (a->flags & ZS_ACT_LAZY)
-            zs_make_plane(r, a, y);
-        a->zcur = zs_row_depth(a, y);
-        a->cross = y;
-    }
-    return a->zcur;
+    zs_active *a = &r->priv.active[ai];
+    zs_active_plane *p = &r->priv.aplane[ai];
+    if (a->flags & ZS_ACT_LAZY)
+        zs_make_plane(r, a, y);
+    p->zcur = zs_row_depth(p, a, y);
+    a->cross = y;
+    return p->zcur;
+}
+
+/* act, pl: the renderer's arrays, passed in locals (owner stores could alias
+ * the renderer, so its fields would be loaded again after each). */
+static inline int64_t row_depth(zs_renderer *r, const zs_active *act, const zs_active_plane *pl,
+                                uint16_t ai, int32_t y)
+{
+    return act[ai].cross == y ? pl[ai].zcur : new_row_depth(r, ai, y);
 }
 
 /* Columns [x0, x1) already reached, tested pixel by pixel against the owner:
@@ -94,15 +103,14 @@ static int64_t row_depth(zs_renderer *r, zs_active *a, int32_t y)
 static void test(zs_renderer *r, int32_t y, uint16_t *owner, int32_t x0, int32_t x1,
                  uint16_t ai)
 {
-    zs_active *act = r->priv.active;
-    zs_active *n = &act[ai];
-    const int64_t zrow = row_depth(r, n, y); /* makes n's plane first */
-    const int64_t dz = n->zdx;
-    const uint16_t tri = n->tri;
+    const zs_active *act = r->priv.active;
+    const zs_active_plane *pl = r->priv.aplane;
+    const int64_t zrow = row_depth(r, act, pl, ai, y); /* makes ai's plane first */
+    const int64_t dz = act[ai].zdx;
+    const uint16_t tri = act[ai].tri;
     int32_t x = x0;
     while (x < x1) {
         uint16_t o = owner[x];
-        zs_active *b;
         int64_t d, dd;
         if (o == ZS_NONE) { /* a cleared gap: taken */
             do
@@ -110,10 +118,9 @@ static void test(zs_renderer *r, int32_t y, uint16_t *owner, int32_t x0, int32_t
             while (x < x1 && owner[x] == ZS_NONE);
             continue;
         }
-        b = &act[o];
-        /* d < 0 or (d == 0 and the tie goes to a): d - tie < 0 (integers) */
-        d = zrow - row_depth(r, b, y) - (tri < b->tri);
-        dd = dz - b->zdx;
+        /* d < 0 or (d == 0 and the tie goes to ai): d - tie < 0 (integers) */
+        d = zrow - row_depth(r, act, pl, o, y) - (tri < act[o].tri);
+        dd = dz - act[o].zdx;
         d += zs_mul64_small(dd, x);
         do {
             if (d < 0)
@@ -128,7 +135,7 @@ void zs_zline_row(zs_renderer *r, int y, uint8_t *row)
 {
     const zs_edge *edges = r->priv.edges;
     const uint16_t *ael = r->priv.ael;
-    zs_active *act = r->priv.active;
+    const zs_active *act = r->priv.active;
     uint16_t *owner = r->priv.zline_owner; /* active triangle, or ZS_NONE */
     int32_t w = r->cfg.width, x0 = w, x1 = w; /* [x0, x1): columns reached */
     uint32_t evals = 0;

@@ -30,11 +30,11 @@ int32_t zs_rec_right_col(const zs_rec_view *v, int32_t y);
  * record on row y; with shade also the colour planes (ac, NULL for a flat-
  * only renderer) and flat pixel. */
 void zs_rec_planes(const zs_renderer *r, uint16_t ti, const zs_rec_view *v, int32_t y,
-                   zs_active *a, zs_active_color *ac, int shade);
+                   zs_active *a, zs_active_plane *p, zs_active_color *ac, int shade);
 /* Depth (Q40) the renderer evaluates at covered centre (x, y): a steep plane
  * is anchored at its row's first covered column first, as the walk does. */
-int64_t zs_rec_depth(const zs_renderer *r, const zs_rec_view *v, zs_active *a, int32_t x,
-                     int32_t y);
+int64_t zs_rec_depth(const zs_renderer *r, const zs_rec_view *v, const zs_active *a,
+                     zs_active_plane *p, int32_t x, int32_t y);
 /* Counts the tallest record (rows) into r->priv.tall_rows once a frame. */
 void zs_rec_count_tall(zs_renderer *r);
 

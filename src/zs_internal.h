@@ -62,10 +62,8 @@ typedef struct zs_edge {
 /* An active triangle: its depth plane and span-walk state, valid while it
  * crosses the current row. */
 typedef struct zs_active {
-    int64_t zrow;          /* depth at column 0 of row y0 (Q40); row y adds
-                              zdy * (y - y0), exactly (planes are not stepped) */
-    int64_t zdx, zdy;      /* depth per column and per row (Q40) */
-    int64_t zcur;          /* scratch: depth at the current span start */
+    int64_t zdx;           /* depth per column (Q40); the rest of the plane is
+                              in zs_active_plane (the walks compare slopes) */
     uint32_t pixel;        /* packed pixel of a flat triangle */
     uint16_t tri;          /* record index: the submission order for ties */
     uint16_t right;        /* its right (trailing) edge */
@@ -80,6 +78,16 @@ typedef struct zs_active {
                               zlo * 2^25 <= depth (Q40) < zhi * 2^25 at any
                               centre it covers (activate.c) */
 } zs_active;
+
+/* Depth plane of an active triangle (same index; none with
+ * ZS_CFG_PRIORITY_ONLY, whose walk decides by record order alone). */
+typedef struct zs_active_plane {
+    int64_t zrow;          /* depth at column 0 of row y0 (Q40); row y adds
+                              zdy * (y - y0), exactly (planes are not stepped) */
+    int64_t zdy;           /* depth per row (Q40) */
+    int64_t zcur;          /* scratch: depth at the current span start (span
+                              mode), at column 0 of row `cross` (zline mode) */
+} zs_active_plane;
 
 /* Colour planes of an active triangle (same index), for Gouraud shading. */
 typedef struct zs_active_color {
@@ -99,6 +107,7 @@ typedef char zs_check_vert[(sizeof(zs_vert) == ZS_VERTEX_BYTES) ? 1 : -1];
 typedef char zs_check_tri[(sizeof(zs_tri) == ZS_TRIANGLE_BYTES) ? 1 : -1];
 typedef char zs_check_edge[(sizeof(zs_edge) == ZS_EDGE_BYTES) ? 1 : -1];
 typedef char zs_check_active[(sizeof(zs_active) == ZS_ACTIVE_BYTES) ? 1 : -1];
+typedef char zs_check_aplane[(sizeof(zs_active_plane) == ZS_ACTIVE_PLANE_BYTES) ? 1 : -1];
 typedef char zs_check_acolor[(sizeof(zs_active_color) == ZS_ACTIVE_COLOR_BYTES) ? 1 : -1];
 
 /* Paths that real frames seldom take (clipping, needles, lighting set-up):
@@ -213,7 +222,8 @@ int zs_activate(zs_renderer *r, uint16_t tri, int32_t y);
 /* Sets the row constant of a steep plane exactly: the true depth at the
  * centre of column xa on row y when the triangle covers it (xa: its first
  * covered column there, clamped to the screen; 0 <= y <= height). */
-void zs_anchor_depth(const zs_renderer *r, zs_active *a, int32_t xa, int32_t y);
+void zs_anchor_depth(const zs_renderer *r, const zs_active *a, zs_active_plane *p, int32_t xa,
+                     int32_t y);
 /* The depth plane of a ZS_ACT_LAZY triangle, as activation would have made
  * it, during row y's walk (a steep one is anchored on row y like the rest). */
 void zs_make_plane(zs_renderer *r, zs_active *a, int32_t y);
@@ -222,8 +232,8 @@ void zs_continue_edge(zs_renderer *r, uint16_t ai, int32_t y);
 /* The same for area.c (Warnock mode, picking): canonical vertex order and
  * depth plane of a record, as zs_activate makes them. */
 void zs_canonical_vertices(const zs_renderer *r, const zs_tri *t, const zs_vert *v[3]);
-void zs_record_depth_plane(zs_active *a, const zs_vert *s[3], const zs_recip *area2, int32_t ox,
-                           int32_t oy, int32_t y);
+void zs_record_depth_plane(zs_active *a, zs_active_plane *p, const zs_vert *s[3],
+                           const zs_recip *area2, int32_t ox, int32_t oy, int32_t y);
 /* raster.c: rows, edges, the active edge list */
 void zs_raster_begin(zs_renderer *r);
 void zs_raster_row(zs_renderer *r, int y, uint8_t *row); /* row NULL: step only */
@@ -402,9 +412,9 @@ static inline int64_t zs_smul32(int32_t a, int32_t b)
 }
 
 /* Depth (Q40) of active triangle a at the centre of column 0 of row y. */
-static inline int64_t zs_row_depth(const zs_active *a, int32_t y)
+static inline int64_t zs_row_depth(const zs_active_plane *p, const zs_active *a, int32_t y)
 {
-    return a->zrow + zs_mul64_small(a->zdy, y - a->y0);
+    return p->zrow + zs_mul64_small(p->zdy, y - a->y0);
 }
 
 static inline int32_t zs_clampi(int32_t v, int32_t lo, int32_t hi)

@@ -167,13 +167,19 @@ const char *zs_strerror(zs_status status);
 
 #define ZS_CFG_ABUFFER 0x20u     /* A-buffer anti-aliasing and transparency
                                     (zs_frame_antialias): ZS_ABUFFER_BYTES */
+#define ZS_CFG_PRIORITY_ONLY 0x80u /* list priority alone: no depth plane per active
+                                    triangle (24 B each saved); every mode but
+                                    ZS_MODE_PRIORITY is refused (ZS_ERR_MODE), and
+                                    so is ZS_CFG_ABUFFER (ZS_ERR_ARGUMENT) */
 
 /* Sizes of the records the arena holds (checked against sizeof in src/). */
 #define ZS_VERTEX_BYTES 8u        /* screen x, y (28.4 in int16) and depth */
 #define ZS_VERTEX_SHADE_BYTES 4u  /* per-vertex colour or light, and fog */
 #define ZS_TRIANGLE_BYTES 12u     /* three vertex indices, bucket link, colour */
 #define ZS_EDGE_BYTES 28u
-#define ZS_ACTIVE_BYTES 56u       /* per active triangle: depth plane, span state */
+#define ZS_ACTIVE_BYTES 32u       /* per active triangle: span state, flat pixel */
+#define ZS_ACTIVE_PLANE_BYTES 24u /* per active triangle: depth plane (not with
+                                     ZS_CFG_PRIORITY_ONLY) */
 #define ZS_ACTIVE_COLOR_BYTES 36u /* per active triangle: colour planes */
 #define ZS_TRI_NORMAL_BYTES 8u    /* ZS_CFG_LINES: a record's eye-space normal, draw */
 #define ZS_TEX_VERTEX_BYTES 6u    /* ZS_CFG_TEXTURE: a vertex's u, v and texture slot */
@@ -190,7 +196,8 @@ const char *zs_strerror(zs_status status);
  * takes one slot per two), with the features `flags` (ZS_CFG_*) leaves in.
  * Includes alignment slack; a compile-time constant when the arguments are.
  * Per pool: vertices 8 B (+4 B shade), triangle records 12 B, row buckets
- * 2 B per row, edges 32 B, active triangles 60 B (+36 B colour planes), the
+ * 2 B per row, edges 32 B, active triangles 36 B + a 24 B depth plane (none
+ * with ZS_CFG_PRIORITY_ONLY) (+36 B colour planes), the
  * z-buffer line 10 B per column; with ZS_CFG_MONO 3 B per column, with
  * ZS_CFG_LINES 6 B per column (4 with ZS_CFG_MONO too), 14 B and 1 bit
  * per triangle record and 2 B per vertex; with ZS_CFG_PRIORITY 4 B per
@@ -205,6 +212,9 @@ const char *zs_strerror(zs_status status);
      ZS_ROUND8_((size_t)(max_edges) * ZS_EDGE_BYTES) +                              \
      2u * ZS_ROUND8_((size_t)(max_edges) * 2u) +                                    \
      ZS_ROUND8_((size_t)((max_edges) / 2u) * ZS_ACTIVE_BYTES) +                     \
+     (((flags) & ZS_CFG_PRIORITY_ONLY)                                              \
+          ? 0u                                                                      \
+          : ZS_ROUND8_((size_t)((max_edges) / 2u) * ZS_ACTIVE_PLANE_BYTES)) +       \
      ((((flags) & (ZS_CFG_FLAT_ONLY | ZS_CFG_TEXTURE)) == ZS_CFG_FLAT_ONLY)         \
           ? 0u                                                                      \
           : ZS_ROUND8_((size_t)((max_edges) / 2u) * ZS_ACTIVE_COLOR_BYTES)) +       \
@@ -580,6 +590,7 @@ typedef struct zs_renderer_private {
     uint16_t *ael;                  /* active edge list (edge indices) */
     uint16_t *edge_free;            /* free edge records */
     struct zs_active *active;       /* active triangles */
+    struct zs_active_plane *aplane; /* their depth planes; NULL with ZS_CFG_PRIORITY_ONLY */
     struct zs_active_color *acolor; /* their colour planes; NULL if flat only */
     uint16_t *in_set;               /* span mode: the in-polygon set */
     uint16_t *active_free;          /* free active triangles */

@@ -87,7 +87,7 @@ static zs_status render(uint16_t flags, zs_visibility mode, zs_shading shading, 
 static void test_arena_sizes(void **state)
 {
     zs_config c = zs_config_default(240, 240, 1000, 800, 256);
-    size_t full, flat, span_only, lean;
+    size_t full, flat, span_only, lean, prio;
     (void)state;
     full = zs_arena_bytes(&c);
     c.flags = ZS_CFG_FLAT_ONLY;
@@ -104,11 +104,18 @@ static void test_arena_sizes(void **state)
     /* one row of 8-byte depth and 2-byte owner */
     assert_int_equal(full - span_only, 240 * 10);
     assert_int_equal(full - lean, 800 * 4 + 128 * 36 + 240 * 10);
-    c.flags = 0x80;
+    /* priority alone: no depth plane (24 B per triangle slot) */
+    c.flags = ZS_CFG_PRIORITY_ONLY;
+    prio = zs_arena_bytes(&c);
+    assert_int_equal(full - prio, 128 * 24);
+    assert_int_equal(prio, ZS_ARENA_BYTES_CFG(240, 240, 1000, 800, 256, ZS_CFG_PRIORITY_ONLY));
+    c.flags = 0x100; /* no such flag */
+    assert_int_equal(zs_arena_bytes(&c), 0);
+    c.flags = ZS_CFG_PRIORITY_ONLY | ZS_CFG_ABUFFER; /* the resolve decides by depth */
     assert_int_equal(zs_arena_bytes(&c), 0);
     printf("test_config_flags: arena 240x240/1000/800/256 full %zu, flat-only %zu, span-only %zu, "
-           "lean %zu bytes\n",
-           full, flat, span_only, lean);
+           "lean %zu, priority-only %zu bytes\n",
+           full, flat, span_only, lean, prio);
 }
 
 static void test_refusals(void **state)
@@ -120,6 +127,12 @@ static void test_refusals(void **state)
                      ZS_ERR_MODE);
     assert_int_equal(render(ZS_CFG_FLAT_ONLY, ZS_MODE_SPAN, ZS_SHADE_FLAT, 1, img), ZS_ERR_MODE);
     assert_int_equal(render(ZS_CFG_FLAT_ONLY, ZS_MODE_ZLINE, ZS_SHADE_FLAT, 0, img), ZS_OK);
+    /* priority alone keeps no depth plane for the other modes */
+    assert_int_equal(render(ZS_CFG_PRIORITY_ONLY, ZS_MODE_SPAN, ZS_SHADE_FLAT, 0, img), ZS_ERR_MODE);
+    assert_int_equal(render(ZS_CFG_PRIORITY_ONLY, ZS_MODE_ZLINE, ZS_SHADE_FLAT, 0, img),
+                     ZS_ERR_MODE);
+    assert_int_equal(render(ZS_CFG_PRIORITY_ONLY, ZS_MODE_WARNOCK, ZS_SHADE_FLAT, 0, img),
+                     ZS_ERR_MODE);
     free(img);
 }
 
@@ -143,12 +156,40 @@ static void test_lean_equals_full(void **state)
     free(lean);
 }
 
+/* Priority mode decides by record order alone: without depth planes
+ * (ZS_CFG_PRIORITY_ONLY, with or without the other savings) it gives the
+ * full renderer's priority image, Gouraud and fog included. */
+static void test_priority_only_equals_full(void **state)
+{
+    static const uint16_t lean_flags[] = {ZS_CFG_PRIORITY_ONLY,
+                                          ZS_CFG_PRIORITY_ONLY | ZS_CFG_NO_ZLINE,
+                                          ZS_CFG_PRIORITY_ONLY | ZS_CFG_FLAT_ONLY};
+    uint8_t *full = malloc(W * H * 3), *lean = malloc(W * H * 3);
+    int k, shading;
+    (void)state;
+    for (shading = 0; shading < 2; shading++) {
+        zs_shading sh = shading ? ZS_SHADE_GOURAUD : ZS_SHADE_FLAT;
+        memset(full, 0x11, W * H * 3);
+        assert_int_equal(render(0, ZS_MODE_PRIORITY, sh, shading, full), ZS_OK);
+        for (k = 0; k < 3; k++) {
+            if (shading && (lean_flags[k] & ZS_CFG_FLAT_ONLY))
+                continue; /* Gouraud and fog are refused there */
+            memset(lean, 0x22, W * H * 3);
+            assert_int_equal(render(lean_flags[k], ZS_MODE_PRIORITY, sh, shading, lean), ZS_OK);
+            assert_memory_equal(full, lean, W * H * 3);
+        }
+    }
+    free(full);
+    free(lean);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_arena_sizes),
         cmocka_unit_test(test_refusals),
         cmocka_unit_test(test_lean_equals_full),
+        cmocka_unit_test(test_priority_only_equals_full),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

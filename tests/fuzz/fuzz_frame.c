@@ -450,9 +450,12 @@ static int decode_scene(fz_reader *d, scene *s)
 #ifdef ZS_CFG_NO_ZLINE
         c.flags = fz_u16(d);
         if (c.flags & ~(unsigned)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES |
-                                  ZS_CFG_PRIORITY | ZS_CFG_TEXTURE | ZS_CFG_ABUFFER))
+                                  ZS_CFG_PRIORITY | ZS_CFG_TEXTURE | ZS_CFG_ABUFFER |
+                                  ZS_CFG_PRIORITY_ONLY))
             allowed |= BIT(ZS_ERR_ARGUMENT);
         if ((c.flags & ZS_CFG_TEXTURE) && (c.flags & ZS_CFG_ABUFFER))
+            allowed |= BIT(ZS_ERR_ARGUMENT); /* refused together (renderer.c) */
+        if ((c.flags & ZS_CFG_PRIORITY_ONLY) && (c.flags & ZS_CFG_ABUFFER))
             allowed |= BIT(ZS_ERR_ARGUMENT); /* refused together (renderer.c) */
 #endif
         if (c.width == 0 || c.height == 0 || c.width > ZS_MAX_DIM || c.height > ZS_MAX_DIM)

@@ -55,7 +55,7 @@ static uint32_t arena_bytes32(const zs_config *c)
         2u * ROUND8_32(a * 2u) +
         ((c->flags & ZS_CFG_NO_ZLINE)
              ? 0u
-             : ROUND8_32((uint32_t)c->width * 8u) + ROUND8_32((uint32_t)c->width * 2u)) +
+             : ROUND8_32((uint32_t)c->width * 8u) + ROUND8_32((uint32_t)c->width * 2u + 2u)) +
         ((c->flags & ZS_CFG_PRIORITY) ? 2u * ROUND8_32((uint32_t)c->max_triangles * 2u) : 0u) +
         ((c->flags & ZS_CFG_TEXTURE)
              ? ROUND8_32((uint32_t)c->max_vertices * ZS_TEX_VERTEX_BYTES) +
@@ -150,7 +150,8 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
         /* span mode sorts edges here: 2 keys a pixel (zline mode keeps
          * owners only, not depths) */
         r->priv.sort_keys = carve(&cur, (size_t)cfg->width * 8u);
-        r->priv.zline_owner = carve(&cur, (size_t)cfg->width * 2u);
+        /* one owner a column and a sentinel past the last (zline.c) */
+        r->priv.zline_owner = carve(&cur, (size_t)cfg->width * 2u + 2u);
     }
     if (cfg->flags & ZS_CFG_MONO) {
         r->priv.mono_grey = carve(&cur, cfg->width);

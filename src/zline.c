@@ -8,6 +8,9 @@
  * a plane is made only for triangles that meet another one. */
 #include "zs_internal.h"
 
+/* Ends owner runs in test(): no active index (they stay below 2^11) nor ZS_NONE. */
+#define SENTINEL 0xFFFEu
+
 /* First column from x on (up to x1) not owned by o. The owner line is 8-byte
  * aligned in the arena: pairs of owners are compared as words. */
 static int32_t run_end(const uint16_t *owner, int32_t x, int32_t x1, uint16_t o)
@@ -105,30 +108,36 @@ static void test(zs_renderer *r, int32_t y, uint16_t *owner, int32_t x0, int32_t
 {
     const zs_active *act = r->priv.active;
     const zs_active_plane *pl = r->priv.aplane;
-    const int64_t zrow = row_depth(r, act, pl, ai, y); /* makes ai's plane first */
+    /* a triangle has one span a row: its row depth is not cached yet (made
+     * here, with its plane if lazy, for its turns as an owner) */
+    const int64_t zrow = new_row_depth(r, ai, y);
     const int64_t dz = act[ai].zdx;
     const uint16_t tri = act[ai].tri;
-    int32_t x = x0;
-    while (x < x1) {
-        uint16_t o = owner[x];
+    uint16_t *q = owner + x0, *const q1 = owner + x1;
+    /* a sentinel at x1 (the line has a slot past the last column) ends every
+     * run there: no bound test per pixel */
+    const uint16_t kept = *q1;
+    *q1 = SENTINEL;
+    while (q != q1) {
+        uint16_t o = *q;
         int64_t d, dd;
         if (o == ZS_NONE) { /* a cleared gap: taken */
             do
-                owner[x++] = ai;
-            while (x < x1 && owner[x] == ZS_NONE);
+                *q = ai;
+            while (*++q == ZS_NONE);
             continue;
         }
         /* d < 0 or (d == 0 and the tie goes to ai): d - tie < 0 (integers) */
         d = zrow - row_depth(r, act, pl, o, y) - (tri < act[o].tri);
         dd = dz - act[o].zdx;
-        d += zs_mul64_small(dd, x);
+        d += zs_mul64_small(dd, (int32_t)(q - owner));
         do {
             if (d < 0)
-                owner[x] = ai;
-            x++;
+                *q = ai;
             d += dd;
-        } while (x < x1 && owner[x] == o);
+        } while (*++q == o);
     }
+    *q1 = kept;
 }
 
 void zs_zline_row(zs_renderer *r, int y, uint8_t *row)

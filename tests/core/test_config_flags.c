@@ -101,9 +101,10 @@ static void test_arena_sizes(void **state)
                                               ZS_CFG_FLAT_ONLY | ZS_CFG_NO_ZLINE));
     /* shade words (4 B per vertex) and colour planes (36 B per triangle slot) */
     assert_int_equal(full - flat, 800 * 4 + 128 * 36);
-    /* one row of 8-byte depth and 2-byte owner */
-    assert_int_equal(full - span_only, 240 * 10);
-    assert_int_equal(full - lean, 800 * 4 + 128 * 36 + 240 * 10);
+    /* sort keys (8 B) and owners (2 B) a column, and the owners' sentinel
+     * (2 B, rounded to 8) */
+    assert_int_equal(full - span_only, 240 * 10 + 8);
+    assert_int_equal(full - lean, 800 * 4 + 128 * 36 + 240 * 10 + 8);
     /* priority alone: no depth plane (24 B per triangle slot) */
     c.flags = ZS_CFG_PRIORITY_ONLY;
     prio = zs_arena_bytes(&c);

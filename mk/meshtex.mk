@@ -19,3 +19,27 @@ SIM_EXTRA_SRCS += $(TEXIMG_SRCS)
 SIM_EXTRA_CFLAGS += -Itools
 SIM_EXTRA_LIBS += $(TEXIMG_LIBS)
 FUZZ_CLI_LIBS += $(TEXIMG_LIBS)
+
+# Tests: build/tests/tools/test_meshc_tex (TEST_SUITES), tests/tools/test_meshc_tex.c.
+# The duck (a 512 x 512 TGA beside it) and tex_planes.obj (--bsp) are converted
+# at build time and compiled in; the rest runs the converter and the simulator.
+MESHTEX_TEST := $(BUILD)/tests/tools/test_meshc_tex
+TEST_SUITES += $(MESHTEX_TEST)
+$(TOOLS_TEST_GEN)/t_duck.c: $(MESHC) mk/meshtex.mk | deps
+	@mkdir -p $(@D)
+	$(MESHC) -q -n t_duck --normalize --texture auto -o $(basename $@) $(ASSIMP_MODELS)/Collada/duck.dae
+$(TOOLS_TEST_GEN)/t_texbsp.c: tests/tools/data/tex_planes.obj $(MESHC) mk/meshtex.mk | deps
+	@mkdir -p $(@D)
+	$(MESHC) -q -n t_texbsp --bsp --texture $(ASSIMP_MODELS)/Collada/duckCM.tga \
+	    --texture-size 16 -o $(basename $@) $<
+MESHTEX_GEN_SRCS := $(TOOLS_TEST_GEN)/t_duck.c $(TOOLS_TEST_GEN)/t_texbsp.c
+$(MESHTEX_GEN_SRCS:.c=.h): %.h: %.c ;
+$(MESHTEX_TEST): tests/tools/test_meshc_tex.c $(MESHTEX_GEN_SRCS) $(MESHTEX_GEN_SRCS:.c=.h) \
+                 $(MESHC) $(SIM) $(ASAN_LIB) | deps
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) -Wconversion -D_POSIX_C_SOURCE=200809L -I$(TOOLS_TEST_GEN) \
+	    $(shell $(PKG_CONFIG) --cflags libpng 2>/dev/null) \
+	    -DMESHC='"$(MESHC)"' -DSIM='"$(SIM)"' -DASSIMP_MODELS='"$(ASSIMP_MODELS)"' \
+	    -DTOOLS_DATA='"tests/tools/data"' -o $@ $< $(MESHTEX_GEN_SRCS) $(ASAN_LIB) \
+	    $(TEXIMG_LIBS) $(TEST_LIBS)
+.PRECIOUS: $(TOOLS_TEST_GEN)/%.c

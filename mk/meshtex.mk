@@ -43,3 +43,16 @@ $(MESHTEX_TEST): tests/tools/test_meshc_tex.c $(MESHTEX_GEN_SRCS) $(MESHTEX_GEN_
 	    -DTOOLS_DATA='"tests/tools/data"' -o $@ $< $(MESHTEX_GEN_SRCS) $(ASAN_LIB) \
 	    $(TEXIMG_LIBS) $(TEST_LIBS)
 .PRECIOUS: $(TOOLS_TEST_GEN)/%.c
+
+# --- make demo: the textured duck (the simulator's own loading) and the converter's
+# .zsm of it; the demo's main frame (out/demo.png) is untouched ---------------------
+DEMO_TARGETS += demo-texture
+.PHONY: demo-texture
+demo-texture: $(SIM) $(MESHC) | deps
+	@mkdir -p $(OUT)
+	$(SIM) render $(ASSIMP_MODELS)/Collada/duck.dae --textures --fit --rotate -15,-40,0 \
+	    --eye 0,0,2.6 --shade gouraud --background 101830 --quiet --out $(OUT)/duck_textured.png
+	$(MESHC) -q --normalize --normals smooth --texture auto --format zsm -o $(OUT)/duck \
+	    $(ASSIMP_MODELS)/Collada/duck.dae
+	$(SIM) render $(OUT)/duck.zsm --rotate -15,-40,0 --eye 0,0,2.6 --shade gouraud \
+	    --background 101830 --quiet --out $(OUT)/duck_textured_zsm.png

@@ -56,3 +56,15 @@ demo-texture: $(SIM) $(MESHC) | deps
 	    $(ASSIMP_MODELS)/Collada/duck.dae
 	$(SIM) render $(OUT)/duck.zsm --rotate -15,-40,0 --eye 0,0,2.6 --shade gouraud \
 	    --background 101830 --quiet --out $(OUT)/duck_textured_zsm.png
+
+# The converted duck against Mesa's llvmpipe (tests/tools/test_meshc_llvmpipe.c):
+# the core tests' helpers (ray caster, setup-hook records) and OSMesa.
+MESHTEX_LLVMPIPE := $(BUILD)/tests/tools/test_meshc_llvmpipe
+MESHTEX_ZT_OBJS := $(patsubst tests/core/common/%.c,$(BUILD)/tests/core/common/%.o,\
+                     $(sort $(wildcard tests/core/common/*.c)))
+TEST_SUITES += $(MESHTEX_LLVMPIPE)
+$(MESHTEX_LLVMPIPE): tests/tools/test_meshc_llvmpipe.c $(TOOLS_TEST_GEN)/t_duck.c \
+                     $(TOOLS_TEST_GEN)/t_duck.h $(MESHTEX_ZT_OBJS) $(ASAN_LIB) | deps
+	@mkdir -p $(@D)
+	$(CC) $(CORE_TEST_CFLAGS) -I$(TOOLS_TEST_GEN) -o $@ $< $(TOOLS_TEST_GEN)/t_duck.c \
+	    $(MESHTEX_ZT_OBJS) $(ASAN_LIB) $(CORE_TEST_LIBS) -lOSMesa

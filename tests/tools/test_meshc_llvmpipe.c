@@ -12,6 +12,8 @@
  * Over the pixels where the nearest surface is clear (a ray caster over the
  * same records): the same texel at >= 99 % of them in the exact mode, never
  * more than one texel off; the subdivided mode within one texel everywhere.
+ * And the RGB565 frame (the fill's direct path) holds the same texels as
+ * the RGB888 one (its general path), pixel for pixel.
  */
 #include "zt_test.h"
 
@@ -115,7 +117,7 @@ static int wrap_dist(int a, int b, int n)
 }
 
 typedef struct tally {
-    unsigned long px, same, one, more, views;
+    unsigned long px, same, one, more, views, direct_px;
 } tally;
 
 static void compare(const zt_recs *recs, const uint8_t *img, tally *t)
@@ -183,6 +185,26 @@ static void run(unsigned flags, tally *t)
         assert_int_equal(r.stats.tris_dropped, 0);
         gl_frame(&recs);
         compare(&recs, img, t);
+        for (int be = 0; be < 2; be++) { /* RGB565 rows take the direct fill (texels
+                                            * stored as they are): the same texels as the
+                                            * RGB888 rows of the general one */
+            static uint8_t img16[W * H * 2];
+            zs_shade_params sp16 = sp;
+            sp16.format = be ? ZS_FMT_RGB565_BE : ZS_FMT_RGB565;
+            assert_int_equal(zs_frame_begin(&r, &cam, ZS_MODE_SPAN), ZS_OK);
+            assert_int_equal(zs_frame_shading(&r, &sp16), ZS_OK);
+            assert_int_equal(zs_draw(&r, &m, &model), ZS_OK);
+            assert_int_equal(zt_render_rows_all(&r, img16, W, H, sp16.format, H), ZS_OK);
+            for (int k = 0; k < W * H; k++) {
+                const uint8_t *q = img + 3 * k, *g16 = img16 + 2 * k;
+                unsigned want = (unsigned)(q[0] >> 3) << 11 | (unsigned)(q[1] >> 2) << 5 | q[2] >> 3;
+                unsigned got = be ? (unsigned)g16[0] << 8 | g16[1] : (unsigned)g16[1] << 8 | g16[0];
+                if (got != want)
+                    fail_msg("view %d pixel %d (%s): RGB565 %04x, RGB888 %02x%02x%02x", view, k,
+                             be ? "BE" : "LE", got, q[0], q[1], q[2]);
+            }
+            t->direct_px += W * H;
+        }
         t->views++;
         zt_recs_free(&recs);
     }

@@ -9,9 +9,13 @@
  * sent to /dev/null. Input: byte 0 picks the file type (the extension assimp
  * sees), byte 1 and 2 the options (--center/--normalize, --colors, --normals,
  * --no-merge, --flip-winding, --lenient, --max-triangles, the mesh name; its
- * bit 5 --texture auto, bit 6 --texture-format pal8, bit 7 a .glb input
- * with --texture auto, so that embedded images reach the decoders); the rest is the model file, written
- * to a scratch file and converted.
+ * bit 5 --texture auto, bit 6 --texture-format pal8); the rest is the model
+ * file, written to a scratch file and converted. With bit 7 of byte 0 the
+ * rest is an image instead (PNG, JPEG or TGA by bits 0-1: the name, not its
+ * bytes, picks the decoder tried first) that a fixed textured OBJ quad
+ * names: the image decoders and the resampler get the input. (Not .glb:
+ * assimp 5.2's glTF importer itself crashes on some, which the converter
+ * reports, see its signal handler, but in process that ends the fuzzer.)
  *
  * Invariants:
  *   - no memory error in the converter (ASan/UBSan; assimp itself is not
@@ -448,9 +452,31 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     unsigned long max_tris = 0;
     fz_init(&d, data, size);
     uint8_t kind = fz_u8(&d), o1 = fz_u8(&d), o2 = fz_u8(&d);
-    const char *ext = (kind & 0x80u) ? "glb" : k_ext[kind % (sizeof k_ext / sizeof k_ext[0])];
+    const char *ext = k_ext[kind % (sizeof k_ext / sizeof k_ext[0])];
     snprintf(path, sizeof path, "%s.%s", g_in, ext);
-    {
+    if (kind & 0x80u) { /* the input is the image of a fixed model */
+        static const char *const img_ext[] = {"png", "jpg", "tga", "png"};
+        char ipath[300], mpath[300];
+        const char *base = strrchr(g_in, '/') + 1;
+        FILE *f;
+        ext = "obj";
+        snprintf(path, sizeof path, "%s.obj", g_in);
+        snprintf(mpath, sizeof mpath, "%s.mtl", g_in);
+        snprintf(ipath, sizeof ipath, "%s.%s", g_in, img_ext[kind & 3u]);
+        f = fopen(mpath, "w");
+        FZ_CHECK(f != NULL, "cannot write %s", mpath);
+        fprintf(f, "newmtl m\nKd 1 1 1\nmap_Kd %s.%s\n", base, img_ext[kind & 3u]);
+        fclose(f);
+        f = fopen(path, "w");
+        FZ_CHECK(f != NULL, "cannot write %s", path);
+        fprintf(f, "mtllib %s.mtl\nusemtl m\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+                   "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n", base);
+        fclose(f);
+        f = fopen(ipath, "wb");
+        FZ_CHECK(f != NULL, "cannot write %s", ipath);
+        fwrite(data + d.pos, 1, fz_left(&d), f);
+        fclose(f);
+    } else {
         FILE *f = fopen(path, "wb");
         FZ_CHECK(f != NULL, "cannot write %s", path);
         fwrite(data + d.pos, 1, fz_left(&d), f);

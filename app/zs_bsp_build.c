@@ -33,6 +33,7 @@ typedef struct builder {
     int16_t *pos;
     double *col;   /* 3 per vertex, 0..255 (vertex colours) */
     double *nrm;   /* 3 per vertex (vertex normals) */
+    double *uv;    /* 2 per vertex (texture coordinates) */
     uint8_t *split;
     size_t nv, capv;
     plane *src_plane; /* per input triangle */
@@ -153,6 +154,8 @@ static uint32_t add_vertex(builder *b)
     cap = b->capv;
     b->nrm = grow(b->nrm, &cap, b->nv + 1, 3 * sizeof *b->nrm);
     cap = b->capv;
+    b->uv = grow(b->uv, &cap, b->nv + 1, 2 * sizeof *b->uv);
+    cap = b->capv;
     b->split = grow(b->split, &cap, b->nv + 1, 1);
     b->capv = cap;
     return (uint32_t)b->nv++;
@@ -183,6 +186,8 @@ static uint32_t cut(builder *b, const plane *pl, uint32_t p, uint32_t q)
         b->col[3 * x + k] = b->col[3 * lo + k] + t * (b->col[3 * hi + k] - b->col[3 * lo + k]);
         b->nrm[3 * x + k] = b->nrm[3 * lo + k] + t * (b->nrm[3 * hi + k] - b->nrm[3 * lo + k]);
     }
+    for (unsigned k = 0; k < 2; k++) /* at the exact crossing, like colours */
+        b->uv[2 * x + k] = b->uv[2 * lo + k] + t * (b->uv[2 * hi + k] - b->uv[2 * lo + k]);
     snap = sqrt(snap);
     if (snap > b->max_snap)
         b->max_snap = snap;
@@ -402,6 +407,7 @@ void zs_bspb_free(zs_bspb_result *r)
     free(r->mesh.fnrm);
     free(r->mesh.vcol);
     free(r->mesh.vnrm);
+    free(r->mesh.uv);
     free(r->source);
     free(r->is_split);
     free(r->nodes);
@@ -432,6 +438,8 @@ const char *zs_bspb_build(const zs_bspb_mesh *in, const zs_bspb_params *p, zs_bs
             b.col[3 * v + k] = in->vcol ? (double)((in->vcol[i] >> (16 - 8 * k)) & 255u) : 0;
             b.nrm[3 * v + k] = in->vnrm ? in->vnrm[3 * i + k] / 16384.0 : 0;
         }
+        for (unsigned k = 0; k < 2; k++)
+            b.uv[2 * v + k] = in->uv ? (double)in->uv[2 * i + k] : 0;
         b.split[v] = 0;
     }
     b.src_plane = calloc(in->nt ? in->nt : 1, sizeof *b.src_plane);
@@ -517,6 +525,14 @@ const char *zs_bspb_build(const zs_bspb_mesh *in, const zs_bspb_params *p, zs_bs
                     m->vnrm[3 * i + k] = q14(len > 0 ? n[k] / len : 0);
             }
         }
+        if (in->uv) {
+            if (!(m->uv = malloc(2 * m->nv * sizeof *m->uv + 1)))
+                abort();
+            for (size_t i = 0; i < 2 * m->nv; i++) {
+                double v = floor(b.uv[i] + 0.5);
+                m->uv[i] = (int16_t)(v < -32768 ? -32768 : v > 32767 ? 32767 : v);
+            }
+        }
         out->nodes = b.nodes;
         b.nodes = 0;
         out->node_count = b.nn;
@@ -528,6 +544,7 @@ const char *zs_bspb_build(const zs_bspb_mesh *in, const zs_bspb_params *p, zs_bs
     free(b.pos);
     free(b.col);
     free(b.nrm);
+    free(b.uv);
     free(b.split);
     free(b.nodes);
     free(b.out.t);

@@ -38,6 +38,7 @@ typedef struct zs_bspb_mesh {
     int16_t *fnrm;   /* 3 per triangle, Q14 */
     uint32_t *vcol;  /* per vertex */
     int16_t *vnrm;   /* 3 per vertex, Q14 */
+    int16_t *uv;     /* 2 per vertex, Q3.12 (split vertices interpolate them) */
     size_t nv, nt;
 } zs_bspb_mesh;
 

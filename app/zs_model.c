@@ -25,7 +25,21 @@ static void chunk_free(zs_model_chunk *c)
     free(c->qpos);
     free(c->qnrm);
     free(c->fcol);
+    free(c->uv);
+    free(c->quv);
     memset(c, 0, sizeof *c);
+}
+
+static zs_texture *model_add_texture(zs_model *scene)
+{
+    zs_texture **p = realloc(scene->textures, (scene->ntex + 1) * sizeof *p), *t;
+    if (p == NULL)
+        return NULL;
+    scene->textures = p;
+    t = calloc(1, sizeof *t);
+    if (t != NULL)
+        scene->textures[scene->ntex++] = t;
+    return t;
 }
 
 void zs_model_free(zs_model *scene)
@@ -35,6 +49,12 @@ void zs_model_free(zs_model *scene)
     for (i = 0; i < scene->count; i++)
         chunk_free(&scene->chunks[i]);
     free(scene->chunks);
+    for (i = 0; i < scene->ntex; i++) {
+        free((void *)(uintptr_t)scene->textures[i]->texels);
+        free((void *)(uintptr_t)scene->textures[i]->palette);
+        free(scene->textures[i]);
+    }
+    free(scene->textures);
     memset(scene, 0, sizeof *scene);
 }
 
@@ -66,7 +86,40 @@ typedef struct load_ctx {
     unsigned long normals_checked, normals_against;
     int32_t *remap;       /* per source vertex: index in the current chunk or -1 */
     size_t remap_cap;
+    const zs_texture **mat_tex; /* per material: its texture, once asked */
+    uint8_t *mat_asked;
 } load_ctx;
+
+/* The texture of material `mat` (asked of the caller once per load). */
+static int material_texture(load_ctx *lc, unsigned mat, const zs_texture **out)
+{
+    zs_texture t, *keep;
+    int rc;
+    *out = NULL;
+    if (lc->o->load_texture == NULL || mat >= lc->ai->mNumMaterials || lc->mat_tex == NULL)
+        return 0;
+    if (lc->mat_asked[mat]) {
+        *out = lc->mat_tex[mat];
+        return 0;
+    }
+    lc->mat_asked[mat] = 1;
+    memset(&t, 0, sizeof t);
+    rc = lc->o->load_texture(lc->o->texture_user, lc->ai, mat, lc->path, &t);
+    if (rc < 0)
+        return -1;
+    if (rc == 0)
+        return 0;
+    keep = model_add_texture(lc->scene);
+    if (keep == NULL) {
+        free((void *)(uintptr_t)t.texels);
+        free((void *)(uintptr_t)t.palette);
+        return -1;
+    }
+    *keep = t;
+    lc->mat_tex[mat] = keep;
+    *out = keep;
+    return 0;
+}
 
 zs_model_opts zs_model_opts_default(void)
 {
@@ -137,8 +190,11 @@ static int add_mesh(void *user, const zs_import_part *part)
     int has_mat;
     uint32_t f, nv = m->mNumVertices, max_v, max_t;
     zs_model_chunk *c = NULL;
+    const zs_texture *tex = NULL;
     size_t k;
 
+    if (m->mTextureCoords[0] != NULL && material_texture(lc, m->mMaterialIndex, &tex) != 0)
+        return -1;
     for (k = 0; k < lc->ai->mNumMeshes; k++)
         if (lc->ai->mMeshes[k] == m)
             file_normals = lc->file_normals[k] && m->mNormals != NULL;
@@ -187,6 +243,12 @@ static int add_mesh(void *user, const zs_import_part *part)
             c->first_tri = lc->scene->total_tris;
             c->has_material_color = has_mat;
             c->material_color = mat_color;
+            if (tex != NULL) {
+                c->texture = tex;
+                c->uv = malloc((size_t)max_v * 2 * sizeof *c->uv);
+                if (c->uv == NULL)
+                    goto oom;
+            }
         }
         for (j = 0; j < 3; j++) {
             unsigned src = face->mIndices[j];
@@ -214,6 +276,15 @@ static int add_mesh(void *user, const zs_import_part *part)
                 if (colors)
                     c->vcol[d] = zs_import_color(m->mColors[0][src].r, m->mColors[0][src].g,
                                                  m->mColors[0][src].b);
+                if (c->uv != NULL) {
+                    c->uv[2 * d] = m->mTextureCoords[0][src].x;
+                    c->uv[2 * d + 1] = m->mTextureCoords[0][src].y;
+                    if (!isfinite(c->uv[2 * d]) || !isfinite(c->uv[2 * d + 1])) {
+                        fprintf(stderr, "%s: %s: vertex %u has a texture coordinate that is "
+                                        "not finite\n", lc->o->prog, lc->path, src);
+                        return -1;
+                    }
+                }
                 lc->remap[src] = (int32_t)d;
             }
             tri[j] = (uint16_t)lc->remap[src];
@@ -258,7 +329,9 @@ static int load_zsm(zs_model *scene, const char *path, const zs_model_opts *o, F
     zs_model_chunk *c;
     int up = o->up == ZS_UP_AUTO ? ZS_UP_Y : o->up, a;
     const char *why = NULL;
+    zs_texture tex;
 
+    memset(&tex, 0, sizeof tex);
     if (fread(hdr, 1, sizeof hdr, fp) != sizeof hdr) {
         why = "truncated header";
         goto bad;
@@ -268,7 +341,7 @@ static int load_zsm(zs_model *scene, const char *path, const zs_model_opts *o, F
     color = get_le(hdr + 16, 4);
     vc = get_le(hdr + 20, 2);
     tc = get_le(hdr + 22, 2);
-    if ((flags & ~15u) != 0 || scale <= 0 || color > 0xFFFFFFu || vc == 0 || tc == 0) {
+    if ((flags & ~31u) != 0 || scale <= 0 || color > 0xFFFFFFu || vc == 0 || tc == 0) {
         why = "bad header (flags, scale, colour or counts)";
         goto bad;
     }
@@ -281,6 +354,34 @@ static int load_zsm(zs_model *scene, const char *path, const zs_model_opts *o, F
         need += (size_t)tc * 6u;
     if (flags & ZS_ZSM_VERTEX_NORMALS)
         need += (size_t)vc * 6u;
+    if (flags & ZS_ZSM_TEXTURE) {
+        /* uvs and the texture's header; its texels follow */
+        uint8_t th[8];
+        size_t texbytes;
+        need += (size_t)vc * 4u;
+        if (fseek(fp, (long)(ZS_ZSM_HEADER_BYTES + need), SEEK_SET) != 0 ||
+            fread(th, 1, sizeof th, fp) != sizeof th) {
+            why = "the size does not match the header's counts";
+            goto bad;
+        }
+        tex.width = (uint16_t)get_le(th, 2);
+        tex.height = (uint16_t)get_le(th + 2, 2);
+        tex.format = th[4];
+        tex.flags = th[5];
+        tex.texels = th; /* for the check only */
+        tex.palette = (const uint16_t *)(const void *)th;
+        if (zs_texture_check(&tex) != ZS_OK || get_le(th + 6, 2) != 0) {
+            why = "a bad texture (size, format or flags)";
+            goto bad;
+        }
+        texbytes = (size_t)tex.width * tex.height * (tex.format == ZS_TEX_PAL8 ? 1u : 2u) +
+                   (tex.format == ZS_TEX_PAL8 ? 512u : 0u);
+        need += sizeof th + texbytes;
+        if (fseek(fp, (long)ZS_ZSM_HEADER_BYTES, SEEK_SET) != 0) {
+            why = "cannot seek";
+            goto bad;
+        }
+    }
     buf = malloc(need + 1);
     if (buf == NULL)
         goto oom;
@@ -325,9 +426,46 @@ static int load_zsm(zs_model *scene, const char *path, const zs_model_opts *o, F
     }
     if (flags & ZS_ZSM_FACE_NORMALS)
         off += (size_t)tc * 6u; /* the core computes face normals from the winding */
-    if (flags & ZS_ZSM_VERTEX_NORMALS)
+    if (flags & ZS_ZSM_VERTEX_NORMALS) {
         for (k = 0; k < vc * 3u; k++)
             c->nrm[k] = (double)(int16_t)get_le(buf + off + 2u * k, 2) / 16384.0;
+        off += (size_t)vc * 6u;
+    }
+    if (flags & ZS_ZSM_TEXTURE) {
+        zs_texture *keep = model_add_texture(scene);
+        size_t n = (size_t)tex.width * tex.height, j;
+        uint16_t *pal = NULL;
+        if (keep == NULL || (c->quv = malloc((size_t)vc * 2u * sizeof *c->quv)) == NULL)
+            goto oom;
+        for (k = 0; k < vc * 2u; k++)
+            c->quv[k] = (int16_t)get_le(buf + off + 2u * k, 2);
+        off += (size_t)vc * 4u + 8u;
+        *keep = tex;
+        keep->texels = NULL;
+        keep->palette = NULL;
+        if (tex.format == ZS_TEX_PAL8) {
+            uint8_t *t8 = malloc(n);
+            pal = malloc(256 * sizeof *pal);
+            if (t8 == NULL || pal == NULL) {
+                free(t8);
+                free(pal);
+                goto oom;
+            }
+            for (j = 0; j < 256; j++)
+                pal[j] = (uint16_t)get_le(buf + off + 2u * j, 2);
+            memcpy(t8, buf + off + 512u, n);
+            keep->texels = t8;
+            keep->palette = pal;
+        } else {
+            uint16_t *t16 = malloc(n * sizeof *t16);
+            if (t16 == NULL)
+                goto oom;
+            for (j = 0; j < n; j++)
+                t16[j] = (uint16_t)get_le(buf + off + 2u * j, 2);
+            keep->texels = t16;
+        }
+        c->texture = keep;
+    }
     for (k = 0; k < vc; k++) {
         zs_import_up_to_y(up, &c->pos[3 * k]);
         if (c->nrm != NULL) {
@@ -488,7 +626,18 @@ int zs_model_load_opts(zs_model *scene, const char *path, const zs_model_opts *o
     lc.want_normals = o->want_normals;
     lc.up = o->up == ZS_UP_AUTO ? zs_import_file_up(ai) : o->up;
     lc.file_normals = file_normals;
+    if (o->load_texture != NULL && ai->mNumMaterials > 0) {
+        lc.mat_tex = calloc(ai->mNumMaterials, sizeof *lc.mat_tex);
+        lc.mat_asked = calloc(ai->mNumMaterials, 1);
+        if (lc.mat_tex == NULL || lc.mat_asked == NULL) {
+            free(lc.mat_tex);
+            free(lc.mat_asked);
+            lc.mat_tex = NULL;
+        }
+    }
     rc = zs_import_walk(ai, add_mesh, &lc);
+    free(lc.mat_tex);
+    free(lc.mat_asked);
     if (rc == ZS_IMPORT_ERR_MESH || rc == ZS_IMPORT_ERR_DEPTH)
         fprintf(stderr, "%s: %s: %s\n", o->prog, path,
                 rc == ZS_IMPORT_ERR_MESH ? "a node refers to a missing mesh"
@@ -669,7 +818,43 @@ int zs_model_quantize(zs_model *scene)
             for (k = 0; k < n; k++)
                 c->qnrm[k] = clamp16(floor(c->nrm[k] * 16384.0 + 0.5), 16384.0);
         }
+        if (c->uv != NULL && c->texture != NULL && c->quv == NULL) {
+            /* v turned to run down the rows; whole repeats taken off (not
+             * with clamp) so that they fit Q3.12, as the converter does */
+            double lo[2] = {0, 0}, hi[2] = {0, 0}, shift[2] = {0, 0};
+            uint32_t v;
+            int a;
+            for (v = 0; v < c->vcount; v++)
+                for (a = 0; a < 2; a++) {
+                    double t = a ? 1.0 - c->uv[2 * v + 1] : c->uv[2 * v];
+                    if (v == 0 || t < lo[a])
+                        lo[a] = t;
+                    if (v == 0 || t > hi[a])
+                        hi[a] = t;
+                }
+            if (!(c->texture->flags & ZS_TEX_CLAMP))
+                for (a = 0; a < 2; a++)
+                    shift[a] = floor((lo[a] + hi[a]) / 2.0);
+            c->quv = malloc((size_t)(c->vcount ? c->vcount : 1) * 2 * sizeof *c->quv);
+            if (c->quv == NULL)
+                goto oom;
+            for (v = 0; v < c->vcount; v++)
+                for (a = 0; a < 2; a++) {
+                    double t = ((a ? 1.0 - c->uv[2 * v + 1] : c->uv[2 * v]) - shift[a]) * ZS_UV_ONE;
+                    t = floor(t + 0.5);
+                    if (t < -32768.0 || t > 32767.0) {
+                        fprintf(stderr, "zspan-sim: texture coordinates span %g..%g: more than "
+                                        "the core's -8..8\n", lo[a], hi[a]);
+                        return -1;
+                    }
+                    c->quv[2 * v + (uint32_t)a] = (int16_t)t;
+                }
+        }
         memset(&c->mesh, 0, sizeof c->mesh);
+        if (c->quv != NULL && c->texture != NULL) {
+            c->mesh.uvs = c->quv;
+            c->mesh.texture = c->texture;
+        }
         c->mesh.positions = c->qpos;
         c->mesh.indices = c->idx;
         c->mesh.vertex_normals = c->qnrm;

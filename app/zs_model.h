@@ -12,6 +12,8 @@
 
 #include "zspan/zspan.h"
 
+struct aiScene;
+
 /* One piece of a loaded mesh, at most 65535 vertices and 65535 triangles, so
  * it becomes one zs_mesh. World coordinates (node transforms applied). */
 typedef struct zs_model_chunk {
@@ -23,6 +25,9 @@ typedef struct zs_model_chunk {
     uint32_t first_tri;   /* index of the first triangle in the whole scene (0-based) */
     int has_material_color;
     zs_color material_color;
+    double *uv;           /* 2 per vertex as the file has them (v up), or NULL */
+    int16_t *quv;         /* 2 per vertex in Q3.12 (v down the texture), or NULL */
+    const zs_texture *texture; /* owned by the zs_model, or NULL */
 
     /* Filled by zs_model_quantize. */
     int16_t *qpos;
@@ -36,6 +41,8 @@ typedef struct zs_model {
     size_t count, cap;
     uint32_t total_tris;  /* triangles over all chunks (the tags run 1..total_tris) */
     uint32_t total_verts;
+    zs_texture **textures; /* the chunks' textures (malloc'd texels), freed with it */
+    size_t ntex;
 } zs_model;
 
 /* The file's up axis (zs_model_opts.up): the model is turned so that it
@@ -50,6 +57,13 @@ typedef struct zs_model_opts {
     int flip_winding;   /* the file's triangles are clockwise: reverse them */
     int up;             /* ZS_UP_* */
     int quiet;          /* no warnings */
+    /* Textures of assimp files (NULL: none). Called once per material that
+     * textured vertices use: 1 with *out filled (texels and palette
+     * malloc'd, the model frees them), 0 for no texture, -1 to fail the load
+     * (after a message). */
+    int (*load_texture)(void *user, const struct aiScene *ai, unsigned material,
+                        const char *path, zs_texture *out);
+    void *texture_user;
 } zs_model_opts;
 
 /* zs_model_opts with prog "zspan-sim", up AUTO, nothing else. */
@@ -66,6 +80,11 @@ zs_model_opts zs_model_opts_default(void);
 #define ZS_ZSM_VERTEX_COLORS 2u
 #define ZS_ZSM_FACE_NORMALS 4u
 #define ZS_ZSM_VERTEX_NORMALS 8u
+/* With ZS_ZSM_TEXTURE, after those: i16 uvs[2 V] (Q3.12, zs_mesh.uvs), u16
+ * width, u16 height, u8 format (zs_tex_format), u8 flags (ZS_TEX_*), u16 0,
+ * then for ZS_TEX_PAL8 u16 palette[256] and u8 texels[width height], else
+ * u16 texels[width height] (RGB565). */
+#define ZS_ZSM_TEXTURE 16u
 #define ZS_ZSM_HEADER_BYTES 24u
 
 /* Loads a file with assimp (triangulated, identical vertices joined; points

@@ -12,6 +12,7 @@
 #include "raycast.h"
 #include "regions.h"
 #include "zs_arena.h"
+#include "zs_teximg.h"
 #include "zs_bsp_build.h"
 #include "zs_model.h"
 #include "zspan/priority.h"
@@ -36,6 +37,7 @@ static void opts_default(sim_render_opts *o)
     o->background = 0;
     o->band = 1;
     o->grid = 8;
+    o->tex_size = 256;
 }
 
 static int parse_fog(const char *s, sim_render_opts *o)
@@ -158,8 +160,26 @@ static int parse_args(int argc, char **argv, sim_render_opts *o)
             o->quiet = 1;
             continue;
         }
+        if (strcmp(a, "--textures") == 0) {
+            o->textures = 1;
+            continue;
+        }
 #define OPT(name) ((m = zs_opt_value(argc, argv, &i, name, &v, SIM_PROG)) != 0)
-        if (OPT("--size")) {
+        if (OPT("--texture-size")) {
+            if (m < 0 || zs_opt_long(SIM_PROG, "--texture-size", v, 1, ZS_TEX_MAX_DIM,
+                                     &o->tex_size) != 0)
+                return SIM_EXIT_USAGE;
+            if (o->tex_size & (o->tex_size - 1)) {
+                fprintf(stderr, "zspan-sim: --texture-size must be a power of two, got %ld\n",
+                        o->tex_size);
+                return SIM_EXIT_USAGE;
+            }
+        } else if (OPT("--texture-filter")) {
+            static const char *const filters[] = {"nearest", "bilinear"};
+            if (m < 0 || zs_opt_choice(SIM_PROG, "--texture-filter", v, filters, 2,
+                                       &o->tex_bilinear) != 0)
+                return SIM_EXIT_USAGE;
+        } else if (OPT("--size")) {
             if (m < 0 || zs_opt_size(SIM_PROG, "--size", v, &o->width, &o->height) != 0)
                 return SIM_EXIT_USAGE;
         } else if (OPT("--fov")) {
@@ -564,11 +584,30 @@ static int vec_to_fixed(const char *what, const double v[3], zs_vec3 *out)
 /* --order bsp: compiles the meshes into one BSP tree (app/zs_bsp_build.c),
  * all chunks merged so that their triangles are ordered among each other;
  * *extra: the triangles the splits add. Returns 0, or -1 after a message. */
+/* --textures: a material's diffuse texture (zs_model_opts.load_texture). */
+static int sim_load_texture(void *user, const struct aiScene *ai, unsigned material,
+                            const char *path, zs_texture *out)
+{
+    const sim_render_opts *o = user;
+    char ref[256], msg[768];
+    int rc = zs_timg_material_texture(ai, material, path, (unsigned)o->tex_size, 1,
+                                      ZS_TEX_RGB565, o->tex_bilinear ? ZS_TEX_BILINEAR : 0u, out,
+                                      ref, sizeof ref, msg, sizeof msg);
+    if (rc == ZS_TIMG_NONE)
+        return 0;
+    if (rc != ZS_TIMG_OK) {
+        fprintf(stderr, "zspan-sim: %s: texture %s: %s\n", path, ref,
+                rc == ZS_TIMG_ERR_MEMORY ? "out of memory" : msg);
+        return -1;
+    }
+    return 1;
+}
+
 static int build_tree(const zs_model *scene, zs_bspb_result *tree, zs_mesh *mesh,
                       unsigned long *extra, const sim_render_opts *o)
 {
     size_t i, nv = 0, nt = 0, v0 = 0, t0 = 0;
-    int fcol = 1, vnrm = 1, vcol = 1;
+    int fcol = 1, vnrm = 1, vcol = 1, uv = 1;
     zs_fixed scale = 0;
     zs_bspb_mesh in;
     const char *err;
@@ -579,6 +618,7 @@ static int build_tree(const zs_model *scene, zs_bspb_result *tree, zs_mesh *mesh
         fcol &= m->face_colors != NULL;
         vnrm &= m->vertex_normals != NULL;
         vcol &= m->vertex_colors != NULL;
+        uv &= m->uvs != NULL && m->texture == scene->chunks[0].mesh.texture; /* one texture */
         if (m->scale > scale)
             scale = m->scale; /* the chunks are put on the coarsest grid */
     }
@@ -592,7 +632,9 @@ static int build_tree(const zs_model *scene, zs_bspb_result *tree, zs_mesh *mesh
     in.fcol = fcol ? malloc(nt * sizeof *in.fcol + 1) : NULL;
     in.vnrm = vnrm ? malloc(3 * nv * sizeof *in.vnrm + 1) : NULL;
     in.vcol = vcol ? malloc(nv * sizeof *in.vcol + 1) : NULL;
-    if (!in.pos || !in.idx || (fcol && !in.fcol) || (vnrm && !in.vnrm) || (vcol && !in.vcol)) {
+    in.uv = uv ? malloc(2 * nv * sizeof *in.uv + 1) : NULL;
+    if (!in.pos || !in.idx || (fcol && !in.fcol) || (vnrm && !in.vnrm) || (vcol && !in.vcol) ||
+        (uv && !in.uv)) {
         fprintf(stderr, "zspan-sim: out of memory\n");
         return -1;
     }
@@ -606,6 +648,8 @@ static int build_tree(const zs_model *scene, zs_bspb_result *tree, zs_mesh *mesh
             memcpy(in.vnrm + 3 * v0, m->vertex_normals, 3u * m->vertex_count * sizeof *in.vnrm);
         if (vcol)
             memcpy(in.vcol + v0, m->vertex_colors, m->vertex_count * sizeof *in.vcol);
+        if (uv)
+            memcpy(in.uv + 2 * v0, m->uvs, 2u * m->vertex_count * sizeof *in.uv);
         if (fcol)
             memcpy(in.fcol + t0, m->face_colors, m->triangle_count * sizeof *in.fcol);
         for (k = 0; k < 3u * m->triangle_count; k++)
@@ -621,6 +665,7 @@ static int build_tree(const zs_model *scene, zs_bspb_result *tree, zs_mesh *mesh
     free(in.fcol);
     free(in.vnrm);
     free(in.vcol);
+    free(in.uv);
     if (err) {
         fprintf(stderr, "zspan-sim: --order bsp: %s\n", err);
         return -1;
@@ -633,6 +678,8 @@ static int build_tree(const zs_model *scene, zs_bspb_result *tree, zs_mesh *mesh
     mesh->face_normals = tree->mesh.fnrm;
     mesh->vertex_colors = tree->mesh.vcol;
     mesh->vertex_normals = tree->mesh.vnrm;
+    mesh->uvs = tree->mesh.uv;
+    mesh->texture = tree->mesh.uv ? scene->chunks[0].mesh.texture : NULL;
     mesh->vertex_count = (uint16_t)tree->mesh.nv;
     mesh->triangle_count = (uint16_t)tree->mesh.nt;
     *extra = tree->mesh.nt > nt ? tree->mesh.nt - nt : 0;
@@ -847,6 +894,10 @@ int sim_cmd_render(int argc, char **argv)
         lo.flip_winding = o.flip_winding;
         lo.up = o.up_axis;
         lo.quiet = o.quiet;
+        if (o.textures) {
+            lo.load_texture = sim_load_texture;
+            lo.texture_user = &o;
+        }
         if (zs_model_load_opts(&scene, o.files[f], &lo) != 0)
             goto done;
         if (scene.total_tris * (o.two_sided ? 2u : 1u) > ZS_MAX_TRIANGLES) {
@@ -933,6 +984,16 @@ int sim_cmd_render(int argc, char **argv)
         cfg.flags |= ZS_CFG_PRIORITY;
     if (o.aa || o.n_opacity)
         cfg.flags |= ZS_CFG_ABUFFER;
+    if (scene.ntex) {
+        if (cfg.flags & ZS_CFG_ABUFFER) {
+            fprintf(stderr, "zspan-sim: --aa and --opacity do not go with textures (the core's "
+                            "A-buffer is untextured): leave out --textures, or convert the "
+                            "model with zspan-meshc --texture none\n");
+            rc = SIM_EXIT_USAGE;
+            goto done;
+        }
+        cfg.flags |= ZS_CFG_TEXTURE;
+    }
     arena = zs_app_renderer(&r, &cfg, &arena_size, SIM_PROG);
     if (arena == NULL)
         goto done;

@@ -86,6 +86,9 @@ typedef struct sim_render_opts {
     int n_opacity;        /* --opacity A1,A2,...: per draw in file order (the last repeats) */
     uint8_t opacity[16];
     int quiet;
+    int textures;         /* --textures: the materials' diffuse textures (assimp files) */
+    long tex_size;        /* --texture-size N (power of two) */
+    int tex_bilinear;     /* --texture-filter bilinear */
     int done;             /* --help or --version was answered */
     /* Checked conversions of the camera options. */
     zs_vec3 q_eye, q_target, q_up;

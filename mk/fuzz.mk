@@ -111,9 +111,12 @@ $(FUZZ_DIR)/fuzz_mono: tests/fuzz/fuzz_mono.c tests/fuzz/fuzz_util.h $(FUZZ_DIR)
 FUZZ_ASSIMP_CFLAGS = $(shell $(PKG_CONFIG) --cflags assimp 2>/dev/null)
 FUZZ_ASSIMP_LIBS = $(shell $(PKG_CONFIG) --libs assimp 2>/dev/null || echo -lassimp)
 $(FUZZ_DIR)/fuzz_meshc: tests/fuzz/fuzz_meshc.c tests/fuzz/fuzz_util.h tools/zspan-meshc.c \
-                        app/zs_import.c app/zs_opts.c app/zs_bsp_build.c $(FUZZ_CORE_LIB) | deps
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -Wno-unused-function -Iapp $(FUZZ_ASSIMP_CFLAGS) -fsanitize=fuzzer \
-	    -o $@ $< app/zs_import.c app/zs_opts.c app/zs_bsp_build.c $(FUZZ_CORE_LIB) $(FUZZ_ASSIMP_LIBS) -lm
+                        app/zs_import.c app/zs_opts.c app/zs_bsp_build.c tools/zs_teximg.c \
+                        tools/zs_teximg.h $(FUZZ_CORE_LIB) | deps
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -Wno-unused-function -Iapp -Itools $(FUZZ_ASSIMP_CFLAGS) \
+	    $(shell $(PKG_CONFIG) --cflags libpng 2>/dev/null) -fsanitize=fuzzer \
+	    -o $@ $< app/zs_import.c app/zs_opts.c app/zs_bsp_build.c tools/zs_teximg.c \
+	    $(FUZZ_CORE_LIB) $(FUZZ_ASSIMP_LIBS) $(TEXIMG_LIBS) -lm
 
 # (d) the MCP2210 port against a chip whose answers are the fuzz input; the
 # port uses the zs_bus glue of drivers/bus.c.

@@ -527,43 +527,46 @@ static int32_t clamp_coord(int32_t v, int32_t max)
     return zs_clampi(v, 0, max);
 }
 
-/* The common case of the exact nearest loop below (unlit, unfogged RGB565
- * texels repeated into RGB565 rows), the same arithmetic with its state in
- * locals: n pixels from p. */
-static void nearest_direct(const zs_texture *tex, const zs_active_tex *at, uint8_t *p, int be,
-                           int n, dda *cs, dda *ct, uint64_t d, uint64_t dd)
+/* The texel row and column of indices (ns, nt): clamped to the triangle's
+ * range, repeated. */
+static const uint16_t *direct_row(const zs_texture *tex, const zs_active_tex *at, int32_t nt)
 {
-    const uint16_t *tx = (const uint16_t *)tex->texels;
-    uint32_t wm = tex->width - 1u, hm = tex->height - 1u, w = tex->width;
-    int32_t nmax_s = at->s_max >> 8, nmax_t = at->t_max >> 8;
-    int32_t sb = at->s_base, tb = at->t_base, ns = cs->n, nt = ct->n;
-    uint64_t es = cs->e, gs = cs->g, et = ct->e, gt = ct->g;
-    for (; n > 0; n--, p += 2) {
-        uint32_t c, i, j;
-        int32_t us = 0, ut = 0;
-        if (to_signed(d) > 0) {
-            if (es >= d) { /* unsigned: below zero or at least d */
-                cs->e = es;
-                cs->g = gs;
-                dda_fix(cs, d, dd);
-                es = cs->e;
-                gs = cs->g;
-                ns = cs->n;
-            }
-            if (et >= d) {
-                ct->e = et;
-                ct->g = gt;
-                dda_fix(ct, d, dd);
-                et = ct->e;
-                gt = ct->g;
-                nt = ct->n;
-            }
-            us = ns;
-            ut = nt;
-        }
-        i = (uint32_t)(clamp_coord(us, nmax_s) + sb) & wm;
-        j = (uint32_t)(clamp_coord(ut, nmax_t) + tb) & hm;
-        c = tx[j * w + i];
+    uint32_t j = (uint32_t)(clamp_coord(nt, at->t_max >> 8) + at->t_base) & (tex->height - 1u);
+    return (const uint16_t *)tex->texels + j * tex->width;
+}
+
+static uint32_t direct_col(const zs_texture *tex, const zs_active_tex *at, int32_t ns)
+{
+    return (uint32_t)(clamp_coord(ns, at->s_max >> 8) + at->s_base) & (tex->width - 1u);
+}
+
+/* The common case of the exact nearest loop below (unlit, unfogged RGB565
+ * texels repeated into RGB565 rows) where 1/w stays positive along the span
+ * (both ends are, and it is affine): the same arithmetic with its state in
+ * locals. The indices change only where a remainder leaves [0, d), so the
+ * texel row and column are found there and a pixel is a fetch and a store.
+ * n > 0 pixels from p; 0 if 1/w is not positive at both ends (the caller
+ * takes the general loop). */
+static int nearest_direct(const zs_texture *tex, const zs_active_tex *at, uint8_t *p, int be,
+                          int n, dda *cs, dda *ct, uint64_t d, uint64_t dd)
+{
+    uint64_t es, gs, et, gt;
+    const uint16_t *row;
+    uint32_t i;
+    if (!(to_signed(d) > 0 && to_signed(d + wmul(dd, n - 1)) > 0))
+        return 0;
+    if (cs->e >= d)
+        dda_fix(cs, d, dd);
+    if (ct->e >= d)
+        dda_fix(ct, d, dd);
+    es = cs->e;
+    gs = cs->g;
+    et = ct->e;
+    gt = ct->g;
+    i = direct_col(tex, at, cs->n);
+    row = direct_row(tex, at, ct->n);
+    for (;;) {
+        uint32_t c = row[i];
         if (be) {
             p[0] = (uint8_t)(c >> 8);
             p[1] = (uint8_t)c;
@@ -576,9 +579,28 @@ static void nearest_direct(const zs_texture *tex, const zs_active_tex *at, uint8
             p[0] = u.b[0];
             p[1] = u.b[1];
         }
+        if (--n == 0)
+            return 1;
+        p += 2;
         es += gs;
         et += gt;
         d += dd;
+        if (es >= d) { /* unsigned: below zero or at least d */
+            cs->e = es;
+            cs->g = gs;
+            dda_fix(cs, d, dd);
+            es = cs->e;
+            gs = cs->g;
+            i = direct_col(tex, at, cs->n);
+        }
+        if (et >= d) {
+            ct->e = et;
+            ct->g = gt;
+            dda_fix(ct, d, dd);
+            et = ct->e;
+            gt = ct->g;
+            row = direct_row(tex, at, ct->n);
+        }
     }
 }
 
@@ -719,10 +741,9 @@ void zs_fill_textured(const zs_renderer *r, uint16_t ai, int32_t y, uint8_t *row
         dda cs, ct;
         dda_start(&cs, s0, at->s[1], d, dd);
         dda_start(&ct, t0, at->t[1], d, dd);
-        if (ts.direct && ts.tex->format == ZS_TEX_RGB565 && !ts.clamp) {
-            nearest_direct(ts.tex, at, ts.p, ts.fmt == ZS_FMT_RGB565_BE, x1 - x0, &cs, &ct, d, dd);
+        if (ts.direct && ts.tex->format == ZS_TEX_RGB565 && !ts.clamp && x1 > x0 &&
+            nearest_direct(ts.tex, at, ts.p, ts.fmt == ZS_FMT_RGB565_BE, x1 - x0, &cs, &ct, d, dd))
             return;
-        }
         for (x = x0; x < x1; x++) {
             int32_t ns = 0, nt = 0;
             if (to_signed(d) > 0) {

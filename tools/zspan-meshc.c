@@ -35,6 +35,7 @@
 #include "zs_bsp_build.h"
 #include "zs_import.h"
 #include "zs_opts.h"
+#include "zs_teximg.h"
 #include "zspan/zspan.h"
 
 #define MESHC_VERSION ZSPAN_VERSION_STRING
@@ -70,12 +71,23 @@ typedef struct options {
     long mem_limit_mb;       /* address-space limit while importing; 0 = none, -1 = auto */
     int bsp;                 /* --bsp: also a BSP tree (zspan/priority.h) */
     long bsp_weight, bsp_candidates;
+    int tex_mode;            /* TEX_AUTO, TEX_NONE, TEX_FILE (--texture) */
+    const char *tex_file;
+    unsigned tex_size;       /* --texture-size: largest side, a power of two */
+    int tex_resample;        /* 0: --no-resample */
+    unsigned tex_format;     /* ZS_TEX_RGB565 or ZS_TEX_PAL8 */
+    unsigned tex_flags;      /* ZS_TEX_BILINEAR | ZS_TEX_CLAMP | ZS_TEX_SUBDIV */
 } options;
+
+enum { TEX_AUTO, TEX_NONE, TEX_FILE };
+#define TEX_DEFAULT_SIZE 64u
 
 typedef struct vert {
     double p[3];
     double n[3];      /* file normal (NRM_FILE) */
     double c[3];      /* file colour (COL_VERTEX), 0..1 */
+    double uv[2];     /* texture coordinates as the file has them (v up), textured models */
+    int has_uv;
 } vert;
 
 typedef struct tri {
@@ -90,6 +102,12 @@ typedef struct model {
     size_t nt, cap_t;
     size_t skipped_prims;  /* points and lines */
     size_t degenerate;     /* triangles with repeated indices after merging */
+    int textured;          /* the mesh gets uvs and a texture */
+    zs_texture tex;        /* decoded and sized (malloc'd texels) */
+    char tex_ref[256];     /* its name in the model, or the --texture file */
+    unsigned tex_w0, tex_h0; /* the image's own size */
+    unsigned tex_mat;      /* the material it came from */
+    size_t tex_missing;    /* triangles of the textured model without coordinates */
 } model;
 
 static const char *g_prog = "zspan-meshc";
@@ -226,6 +244,53 @@ typedef struct collect_ctx {
     model *m;
 } collect_ctx;
 
+/* The name of a material's diffuse texture, "" if it has none. */
+static void material_tex_ref(const struct aiScene *s, unsigned mat, char *out, size_t n)
+{
+    struct aiString path;
+    out[0] = 0;
+    if (!s->mMaterials || mat >= s->mNumMaterials || !s->mMaterials[mat])
+        return;
+    if (aiGetMaterialTexture(s->mMaterials[mat], aiTextureType_DIFFUSE, 0, &path, NULL, NULL,
+                             NULL, NULL, NULL, NULL) == aiReturn_SUCCESS ||
+        aiGetMaterialTexture(s->mMaterials[mat], aiTextureType_BASE_COLOR, 0, &path, NULL, NULL,
+                             NULL, NULL, NULL, NULL) == aiReturn_SUCCESS)
+        snprintf(out, n, "%.*s", (int)path.length, path.data);
+}
+
+static int timg_exit(int rc)
+{
+    return rc == ZS_TIMG_ERR_SIZE || rc == ZS_TIMG_ERR_MEMORY ? EXIT_LIMIT : EXIT_INPUT;
+}
+
+/* Decodes and sizes the texture (from the material, or --texture's file). */
+static void load_texture(const options *o, model *m, const struct aiScene *s, unsigned mat)
+{
+    zs_timg img;
+    char msg[768];
+    int rc;
+    if (o->tex_mode == TEX_FILE) {
+        snprintf(m->tex_ref, sizeof m->tex_ref, "%s", o->tex_file);
+        rc = zs_timg_read_file(o->tex_file, &img, msg, sizeof msg);
+    } else {
+        rc = zs_timg_material(s, mat, o->input, &img, m->tex_ref, sizeof m->tex_ref, msg,
+                              sizeof msg);
+        if (rc == ZS_TIMG_NONE)
+            die(EXIT_INPUT, "material %u: its texture %s cannot be found", mat, m->tex_ref);
+    }
+    if (rc != ZS_TIMG_OK)
+        die(timg_exit(rc), "texture %s: %s (--texture none converts without it)", m->tex_ref,
+            msg);
+    m->tex_w0 = img.w;
+    m->tex_h0 = img.h;
+    m->tex_mat = mat;
+    rc = zs_timg_make_texture(&img, m->tex_ref, o->tex_size, o->tex_resample, o->tex_format,
+                              o->tex_flags, &m->tex, msg, sizeof msg);
+    if (rc != ZS_TIMG_OK)
+        die(timg_exit(rc), "%s", rc == ZS_TIMG_ERR_MEMORY ? "out of memory (texture)" : msg);
+    m->textured = 1;
+}
+
 /* One mesh placed by its node (zs_import_walk callback): every vertex, and
  * its faces as triangles (fans for anything triangulation left). */
 static int collect_mesh(void *user, const zs_import_part *part)
@@ -238,8 +303,29 @@ static int collect_mesh(void *user, const zs_import_part *part)
     unsigned vi, f;
     uint32_t mcol = 0xFFFFFFu;
     int up = o->up_axis ? o->up_axis : zs_import_file_up(part->scene);
+    int tex_here = 0;
 
     (void)zs_import_material_color(part->scene, me->mMaterialIndex, &mcol);
+    if (o->tex_mode == TEX_FILE) {
+        tex_here = me->mTextureCoords[0] != NULL;
+        if (tex_here && !m->textured)
+            load_texture(o, m, part->scene, me->mMaterialIndex);
+    } else if (o->tex_mode == TEX_AUTO) {
+        char ref[256];
+        material_tex_ref(part->scene, me->mMaterialIndex, ref, sizeof ref);
+        if (ref[0] && !me->mTextureCoords[0]) {
+            warn(o, "material %u has the texture %s but its mesh has no texture coordinates",
+                 me->mMaterialIndex, ref);
+        } else if (ref[0]) {
+            if (!m->textured)
+                load_texture(o, m, part->scene, me->mMaterialIndex);
+            else if (strcmp(ref, m->tex_ref) != 0)
+                die(EXIT_INPUT, "the materials use more than one texture (%s, %s); a zs_mesh "
+                                "takes one: pick one with --texture FILE, or --texture none",
+                    m->tex_ref, ref);
+            tex_here = 1;
+        }
+    }
     for (vi = 0; vi < me->mNumVertices; vi++) {
         vert v;
         memset(&v, 0, sizeof v);
@@ -259,6 +345,11 @@ static int collect_mesh(void *user, const zs_import_part *part)
                 v.c[1] = (double)((mcol >> 8) & 255) / 255.0;
                 v.c[2] = (double)(mcol & 255) / 255.0;
             }
+        }
+        if (tex_here) {
+            v.uv[0] = me->mTextureCoords[0][vi].x;
+            v.uv[1] = me->mTextureCoords[0][vi].y;
+            v.has_uv = 1;
         }
         add_vert(m, &v);
     }
@@ -368,12 +459,24 @@ static void import_model(const options *o, model *m)
         die(EXIT_INPUT, "node hierarchy deeper than %d levels", ZS_IMPORT_MAX_DEPTH);
     aiReleaseImport(s);
     aiDetachAllLogStreams();
+    if (o->tex_mode == TEX_FILE && !m->textured)
+        die(EXIT_INPUT, "--texture %s: the model has no texture coordinates", o->tex_file);
     for (i = 0; i < m->nv; i++) {
         int r;
         for (r = 0; r < 3; r++)
             if (!isfinite(m->v[i].p[r]))
                 die(EXIT_INPUT, "vertex %u has a non-finite coordinate", i);
+        for (r = 0; r < 2; r++)
+            if (!isfinite(m->v[i].uv[r]))
+                die(EXIT_INPUT, "vertex %u has a non-finite texture coordinate", i);
     }
+    for (i = 0; m->textured && i < m->nt; i++)
+        if (!m->v[m->t[i].v[0]].has_uv || !m->v[m->t[i].v[1]].has_uv ||
+            !m->v[m->t[i].v[2]].has_uv)
+            m->tex_missing++;
+    if (m->tex_missing)
+        warn(o, "%zu triangles have no texture coordinates: they show texel (0, 0)",
+             m->tex_missing);
     if (m->nt == 0) {
         if (m->skipped_prims)
             die(EXIT_INPUT, "has no triangles (only %zu points/lines)", m->skipped_prims);
@@ -399,7 +502,7 @@ static uint64_t hash_bytes(const void *p, size_t n)
     return h;
 }
 
-static size_t vert_key(const options *o, const vert *v, double key[9])
+static size_t vert_key(const options *o, const vert *v, double key[11])
 {
     size_t n = 0;
     int r;
@@ -411,6 +514,8 @@ static size_t vert_key(const options *o, const vert *v, double key[9])
     if (o->colors == COL_VERTEX)
         for (r = 0; r < 3; r++)
             key[n++] = v->c[r] == 0 ? 0.0 : v->c[r];
+    for (r = 0; r < 2; r++) /* (zero unless the model is textured) */
+        key[n++] = v->uv[r] == 0 ? 0.0 : v->uv[r];
     return n;
 }
 
@@ -436,7 +541,7 @@ static void merge_vertices(const options *o, model *m, int merge)
         int c;
         for (c = 0; c < 3; c++) {
             uint32_t vi = m->t[i].v[c];
-            double key[9], key2[9];
+            double key[11], key2[11];
             size_t kn, slot;
             if (remap[vi] != UINT32_MAX)
                 continue;
@@ -564,6 +669,9 @@ static void cluster(const options *o, const model *m, unsigned long res, model *
                 d->n[r] += m->v[i].n[r];
                 d->c[r] += m->v[i].c[r];
             }
+            d->uv[0] += m->v[i].uv[0];
+            d->uv[1] += m->v[i].uv[1];
+            d->has_uv |= m->v[i].has_uv;
             count[id]++;
             remap[i] = id;
         }
@@ -574,6 +682,8 @@ static void cluster(const options *o, const model *m, unsigned long res, model *
             out->v[i].p[r] /= count[i];
             out->v[i].c[r] /= count[i];
         }
+        out->v[i].uv[0] /= count[i];
+        out->v[i].uv[1] /= count[i];
         len = sqrt(out->v[i].n[0] * out->v[i].n[0] + out->v[i].n[1] * out->v[i].n[1] +
                    out->v[i].n[2] * out->v[i].n[2]);
         for (r = 0; r < 3; r++)
@@ -606,6 +716,7 @@ static void free_model(model *m)
 {
     free(m->v);
     free(m->t);
+    zs_timg_texture_free(&m->tex);
     memset(m, 0, sizeof *m);
 }
 
@@ -637,8 +748,18 @@ static void decimate(const options *o, model *m)
     if (!best)
         die(EXIT_LIMIT, "cannot decimate %zu triangles / %zu vertices to the limits "
                         "(%lu triangles, %lu vertices)", m->nt, m->nv, lim_t, lim_v);
-    warn(o, "decimated %zu triangles / %zu vertices to %zu / %zu (grid %lu)", m->nt, m->nv,
-         best_m.nt, best_m.nv, best);
+    warn(o, "decimated %zu triangles / %zu vertices to %zu / %zu (grid %lu)%s", m->nt, m->nv,
+         best_m.nt, best_m.nv, best,
+         m->textured ? "; merged vertices average their texture coordinates (seams smear)" : "");
+    best_m.textured = m->textured;
+    best_m.tex = m->tex;
+    memcpy(best_m.tex_ref, m->tex_ref, sizeof best_m.tex_ref);
+    best_m.tex_w0 = m->tex_w0;
+    best_m.tex_h0 = m->tex_h0;
+    best_m.tex_mat = m->tex_mat;
+    best_m.tex_missing = m->tex_missing;
+    m->tex.texels = NULL; /* moved */
+    m->tex.palette = NULL;
     free_model(m);
     *m = best_m;
 }
@@ -840,6 +961,7 @@ typedef struct out_mesh {
     uint32_t *vcol;      /* per vertex, or NULL */
     int16_t *fnrm;       /* 3 per face, or NULL */
     int16_t *vnrm;       /* 3 per vertex, or NULL */
+    int16_t *uv;         /* 2 per vertex (Q3.12, v down the texture), or NULL */
     uint32_t color;
     size_t nv, nt;       /* counts (a BSP build splits triangles) */
     zs_bspb_result bsp;  /* --bsp: the tree; its mesh holds the arrays above */
@@ -914,6 +1036,34 @@ static void build_output(const options *o, const model *m, long qscale, out_mesh
             om->vnrm[i] = q14(vn[i]);
         free(vn);
     }
+    if (m->textured) {
+        /* v turned to run down the rows (file row 0 first); with repeat a
+         * whole number of repeats is taken off so that the coordinates sit
+         * about 0 (the same texels), then they must fit Q3.12. */
+        double lo[2] = {0, 0}, hi[2] = {0, 0}, shift[2] = {0, 0};
+        for (i = 0; i < m->nv; i++)
+            for (r = 0; r < 2; r++) {
+                double t = r ? 1.0 - m->v[i].uv[1] : m->v[i].uv[0];
+                if (i == 0 || t < lo[r])
+                    lo[r] = t;
+                if (i == 0 || t > hi[r])
+                    hi[r] = t;
+            }
+        if (!(o->tex_flags & ZS_TEX_CLAMP))
+            for (r = 0; r < 2; r++)
+                shift[r] = floor((lo[r] + hi[r]) / 2.0);
+        om->uv = xrealloc(NULL, m->nv * 2 * sizeof *om->uv);
+        for (i = 0; i < m->nv; i++)
+            for (r = 0; r < 2; r++) {
+                double t = (r ? 1.0 - m->v[i].uv[1] : m->v[i].uv[0]) - shift[r];
+                long q = lround(t * ZS_UV_ONE);
+                if (q < -32768 || q > 32767)
+                    die(EXIT_LIMIT, "texture coordinates span %g..%g %s: more than the core's "
+                                    "Q3.12 range (-8..8)%s", lo[r], hi[r], r ? "in v" : "in u",
+                        o->tex_flags & ZS_TEX_CLAMP ? " (with clamp nothing is shifted)" : "");
+                om->uv[i * 2 + (size_t)r] = (int16_t)q;
+            }
+    }
     om->color = o->base_color;
     if (o->colors == COL_MATERIAL && !om->fcol && m->nt)
         om->color = m->t[0].color;
@@ -937,6 +1087,7 @@ static void build_bsp(const options *o, out_mesh *om)
     in.fnrm = om->fnrm;
     in.vcol = om->vcol;
     in.vnrm = om->vnrm;
+    in.uv = om->uv;
     in.nv = om->nv;
     in.nt = om->nt;
     p.split_weight = (int)o->bsp_weight;
@@ -959,12 +1110,14 @@ static void build_bsp(const options *o, out_mesh *om)
     free(om->fnrm);
     free(om->vcol);
     free(om->vnrm);
+    free(om->uv);
     om->pos = om->bsp.mesh.pos;
     om->idx = om->bsp.mesh.idx;
     om->fcol = om->bsp.mesh.fcol;
     om->fnrm = om->bsp.mesh.fnrm;
     om->vcol = om->bsp.mesh.vcol;
     om->vnrm = om->bsp.mesh.vnrm;
+    om->uv = om->bsp.mesh.uv;
     om->nv = om->bsp.mesh.nv;
     om->nt = om->bsp.mesh.nt;
     memset(&om->bsp.mesh, 0, sizeof om->bsp.mesh);
@@ -978,6 +1131,7 @@ static void free_output(out_mesh *om)
     free(om->vcol);
     free(om->fnrm);
     free(om->vnrm);
+    free(om->uv);
     zs_bspb_free(&om->bsp);
 }
 
@@ -989,12 +1143,12 @@ static void put_le(FILE *f, uint32_t v, int bytes)
 }
 
 /* BASE.zsm: the binary mesh zspan-sim reads (layout: app/zs_model.h). */
-static void write_zsm(const options *o, long qscale, const out_mesh *om)
+static void write_zsm(const options *o, const model *m, long qscale, const out_mesh *om)
 {
     size_t len = strlen(o->output), i;
     char *path = xrealloc(NULL, len + 5);
     uint32_t flags = (om->fcol ? 1u : 0u) | (om->vcol ? 2u : 0u) | (om->fnrm ? 4u : 0u) |
-                     (om->vnrm ? 8u : 0u);
+                     (om->vnrm ? 8u : 0u) | (m->textured ? 16u : 0u);
     FILE *f;
 
     sprintf(path, "%s.zsm", o->output);
@@ -1019,6 +1173,26 @@ static void write_zsm(const options *o, long qscale, const out_mesh *om)
         put_le(f, (uint32_t)(uint16_t)om->fnrm[i], 2);
     for (i = 0; om->vnrm && i < om->nv * 3; i++)
         put_le(f, (uint32_t)(uint16_t)om->vnrm[i], 2);
+    if (m->textured) { /* uvs, then the texture (app/zs_model.h) */
+        const zs_texture *t = &m->tex;
+        size_t n = (size_t)t->width * t->height;
+        for (i = 0; i < om->nv * 2; i++)
+            put_le(f, (uint32_t)(uint16_t)om->uv[i], 2);
+        put_le(f, t->width, 2);
+        put_le(f, t->height, 2);
+        put_le(f, t->format, 1);
+        put_le(f, t->flags, 1);
+        put_le(f, 0, 2);
+        if (t->format == ZS_TEX_PAL8) {
+            for (i = 0; i < 256; i++)
+                put_le(f, t->palette[i], 2);
+            for (i = 0; i < n; i++)
+                put_le(f, ((const uint8_t *)t->texels)[i], 1);
+        } else {
+            for (i = 0; i < n; i++)
+                put_le(f, ((const uint16_t *)t->texels)[i], 2);
+        }
+    }
     if (ferror(f) | (fclose(f) != 0))
         die(EXIT_IO, "cannot write %s", path);
     free(path);
@@ -1032,6 +1206,57 @@ static void emit_i16(emitter *e, const int16_t *v, size_t n)
         sprintf(s, "%d", v[i]);
         emit_val(e, s);
     }
+}
+
+static void emit_texture(FILE *fc, const char *name, const model *m, const out_mesh *om)
+{
+    const zs_texture *t = &m->tex;
+    size_t n = (size_t)t->width * t->height, i;
+    char buf[160];
+    emitter e;
+    snprintf(buf, sizeof buf, "static const int16_t %.60s_uvs[%zu]", name, om->nv * 2);
+    emit_begin(&e, fc, buf);
+    emit_i16(&e, om->uv, om->nv * 2);
+    emit_end(&e);
+    fprintf(fc, "/* Texture %s: %u x %u pixels, resampled to %u x %u (%s). */\n", m->tex_ref,
+            m->tex_w0, m->tex_h0, (unsigned)t->width, (unsigned)t->height,
+            t->format == ZS_TEX_PAL8 ? "8-bit palette" : "RGB565");
+    if (t->format == ZS_TEX_PAL8) {
+        const uint8_t *tx = t->texels;
+        snprintf(buf, sizeof buf, "static const uint16_t %.60s_palette[256]", name);
+        emit_begin(&e, fc, buf);
+        for (i = 0; i < 256; i++) {
+            char v[16];
+            sprintf(v, "0x%04X", (unsigned)t->palette[i]);
+            emit_val(&e, v);
+        }
+        emit_end(&e);
+        snprintf(buf, sizeof buf, "static const uint8_t %.60s_texels[%zu]", name, n);
+        emit_begin(&e, fc, buf);
+        for (i = 0; i < n; i++) {
+            char v[16];
+            sprintf(v, "%u", (unsigned)tx[i]);
+            emit_val(&e, v);
+        }
+    } else {
+        const uint16_t *tx = t->texels;
+        snprintf(buf, sizeof buf, "static const uint16_t %.60s_texels[%zu]", name, n);
+        emit_begin(&e, fc, buf);
+        for (i = 0; i < n; i++) {
+            char v[16];
+            sprintf(v, "0x%04X", (unsigned)tx[i]);
+            emit_val(&e, v);
+        }
+    }
+    emit_end(&e);
+    fprintf(fc, "const zs_texture %s_texture = {\n    %s_texels,\n    %s%s,\n    %uu, %uu, /* width, "
+                "height */\n    %s,\n    0x%02Xu /* flags:%s%s%s */\n};\n\n",
+            name, name, t->format == ZS_TEX_PAL8 ? name : "NULL",
+            t->format == ZS_TEX_PAL8 ? "_palette" : " /* palette */", (unsigned)t->width,
+            (unsigned)t->height, t->format == ZS_TEX_PAL8 ? "ZS_TEX_PAL8" : "ZS_TEX_RGB565",
+            (unsigned)t->flags, t->flags & ZS_TEX_BILINEAR ? " bilinear" : " nearest",
+            t->flags & ZS_TEX_CLAMP ? " clamp" : " repeat",
+            t->flags & ZS_TEX_SUBDIV ? " subdivided" : " exact");
 }
 
 static void write_files(const options *o, const model *m, const char *name, long qscale,
@@ -1049,7 +1274,7 @@ static void write_files(const options *o, const model *m, const char *name, long
     if (o->bsp)
         build_bsp(o, &om);
     if (o->zsm) {
-        write_zsm(o, qscale, &om);
+        write_zsm(o, m, qscale, &om);
         free_output(&om);
         return;
     }
@@ -1081,6 +1306,11 @@ static void write_files(const options *o, const model *m, const char *name, long
             "extern const zs_mesh %s;\n",
             g_input, guard, guard, o->bsp ? "priority" : "zspan", upper, om.nv, upper, om.nt,
             upper, qscale, name);
+    if (m->textured)
+        fprintf(fh, "/* Its texture (zs_mesh.texture; needs ZS_CFG_TEXTURE). */\n"
+                    "#define %s_TEXTURE_WIDTH %uu\n#define %s_TEXTURE_HEIGHT %uu\n"
+                    "extern const zs_texture %s_texture;\n",
+                upper, (unsigned)m->tex.width, upper, (unsigned)m->tex.height, name);
     if (o->bsp)
         fprintf(fh, "/* Its BSP tree (zspan-meshc --bsp): draw with zs_draw_bsp. */\n"
                     "#define %s_BSP_NODE_COUNT %zuu\nextern const zs_bsp %s_bsp;\n",
@@ -1148,6 +1378,8 @@ static void write_files(const options *o, const model *m, const char *name, long
         emit_end(&e);
     }
 
+    if (m->textured)
+        emit_texture(fc, name, m, &om);
     fprintf(fc, "const zs_mesh %s = {\n", name);
     fprintf(fc, "    %s_positions,\n    %s_indices,\n", name, name);
     if (om.fcol)
@@ -1169,7 +1401,10 @@ static void write_files(const options *o, const model *m, const char *name, long
     fprintf(fc, "    %ld, /* scale, Q16.16 */\n    %zuu, /* vertex_count */\n"
                 "    %zuu, /* triangle_count */\n    0x%06lXu, /* color */\n",
             qscale, om.nv, om.nt, (unsigned long)om.color);
-    fprintf(fc, "    NULL, /* uvs */\n    NULL /* texture */\n};\n");
+    if (m->textured)
+        fprintf(fc, "    %s_uvs,\n    &%s_texture\n};\n", name, name);
+    else
+        fprintf(fc, "    NULL, /* uvs */\n    NULL /* texture */\n};\n");
     if (o->bsp) {
         /* nodes: {d, {n}, front, back, first, n_front, n_back} (zspan/priority.h) */
         fprintf(fc, "\nstatic const zs_bsp_node %s_bsp_nodes[%zu] = {\n", name,
@@ -1228,6 +1463,21 @@ static void usage(FILE *f)
         "                        ordered by node; NAME_bsp in the C file\n"
         "      --bsp-weight W    splitter score W * splits + |front - back| (default 8)\n"
         "      --bsp-candidates K  splitters scored per node (default 24)\n"
+        "      --texture SRC     none (default): no texture; auto: the diffuse texture of\n"
+        "                        the materials (embedded in the model or a file beside\n"
+        "                        it; PNG, JPEG or TGA) on the mesh's texture coordinates\n"
+        "                        (NAME_texture, NAME_uvs); a file name: that image\n"
+        "      --texture-size N  largest texture side, a power of two 1..1024 (default\n"
+        "                        64): each side becomes the largest power of two not\n"
+        "                        above the image's, then at most N (area average)\n"
+        "      --no-resample     refuse (exit 4) an image that is not already a power of\n"
+        "                        two within --texture-size instead of resampling it\n"
+        "      --texture-format F  rgb565 (default, 2 B a texel) or pal8 (1 B a texel and\n"
+        "                        a 256-colour RGB565 palette, median cut)\n"
+        "      --texture-filter F  nearest (default) or bilinear\n"
+        "      --texture-wrap W  repeat (default) or clamp\n"
+        "      --texture-perspective P  exact (default, every pixel) or subdiv (exact\n"
+        "                        every 16 columns, affine between)\n"
         "      --no-merge        keep the importer's vertices (default: merge vertices\n"
         "                        with identical positions and output attributes)\n"
         "      --flip-winding    reverse every triangle (front faces must be CCW)\n"
@@ -1295,6 +1545,10 @@ static void parse_args(int argc, char **argv, options *o)
     o->base_color = 0xFFFFFFu;
     o->fit_radius = 1.0;
     o->mem_limit_mb = -1;
+    o->tex_mode = TEX_NONE;
+    o->tex_size = TEX_DEFAULT_SIZE;
+    o->tex_resample = 1;
+    o->tex_format = ZS_TEX_RGB565;
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
@@ -1348,6 +1602,42 @@ static void parse_args(int argc, char **argv, options *o)
         } else if (long_arg(argc, argv, &i, "--bsp-weight", 1, 1000, &o->bsp_weight) ||
                    long_arg(argc, argv, &i, "--bsp-candidates", 1, 100000, &o->bsp_candidates)) {
             continue;
+        } else if (str_arg(argc, argv, &i, "--texture", NULL, &v)) {
+            o->tex_mode = !strcmp(v, "auto") ? TEX_AUTO : !strcmp(v, "none") ? TEX_NONE : TEX_FILE;
+            o->tex_file = v;
+            if (!*v) {
+                fprintf(stderr, "%s: error: --texture needs auto, none or an image file\n", g_prog);
+                exit(EXIT_USAGE);
+            }
+        } else if (long_arg(argc, argv, &i, "--texture-size", 1, ZS_TEX_MAX_DIM, &n)) {
+            if (n & (n - 1)) {
+                fprintf(stderr, "%s: error: --texture-size must be a power of two (1..%d), got "
+                                "%ld\n", g_prog, ZS_TEX_MAX_DIM, n);
+                exit(EXIT_USAGE);
+            }
+            o->tex_size = (unsigned)n;
+        } else if (!strcmp(a, "--no-resample")) {
+            o->tex_resample = 0;
+        } else if (str_arg(argc, argv, &i, "--texture-format", NULL, &v)) {
+            static const char *const fmts[] = {"rgb565", "pal8"};
+            if (zs_opt_choice(OPT_PROG, "--texture-format", v, fmts, 2, &k) != 0)
+                exit(EXIT_USAGE);
+            o->tex_format = k ? ZS_TEX_PAL8 : ZS_TEX_RGB565;
+        } else if (str_arg(argc, argv, &i, "--texture-filter", NULL, &v)) {
+            static const char *const filters[] = {"nearest", "bilinear"};
+            if (zs_opt_choice(OPT_PROG, "--texture-filter", v, filters, 2, &k) != 0)
+                exit(EXIT_USAGE);
+            o->tex_flags = (o->tex_flags & ~ZS_TEX_BILINEAR) | (k ? ZS_TEX_BILINEAR : 0u);
+        } else if (str_arg(argc, argv, &i, "--texture-wrap", NULL, &v)) {
+            static const char *const wraps[] = {"repeat", "clamp"};
+            if (zs_opt_choice(OPT_PROG, "--texture-wrap", v, wraps, 2, &k) != 0)
+                exit(EXIT_USAGE);
+            o->tex_flags = (o->tex_flags & ~ZS_TEX_CLAMP) | (k ? ZS_TEX_CLAMP : 0u);
+        } else if (str_arg(argc, argv, &i, "--texture-perspective", NULL, &v)) {
+            static const char *const persp[] = {"exact", "subdiv"};
+            if (zs_opt_choice(OPT_PROG, "--texture-perspective", v, persp, 2, &k) != 0)
+                exit(EXIT_USAGE);
+            o->tex_flags = (o->tex_flags & ~ZS_TEX_SUBDIV) | (k ? ZS_TEX_SUBDIV : 0u);
         } else if (!strcmp(a, "--no-merge")) {
             o->merge = 0;
         } else if (!strcmp(a, "--flip-winding")) {
@@ -1472,6 +1762,12 @@ int main(int argc, char **argv)
                    "max quantisation error %.3g\n",
                 o.input, m.nt, m.nv, raw_t, raw_v, radius, lo[0], lo[1], lo[2], hi[0], hi[1],
                 hi[2], qscale, (double)qscale / 131072.0);
+        if (m.textured)
+            fprintf(f, "%s: texture %s: %u x %u -> %u x %u %s, %zu bytes\n", o.input, m.tex_ref,
+                    m.tex_w0, m.tex_h0, (unsigned)m.tex.width, (unsigned)m.tex.height,
+                    m.tex.format == ZS_TEX_PAL8 ? "pal8" : "rgb565",
+                    (size_t)m.tex.width * m.tex.height * (m.tex.format == ZS_TEX_PAL8 ? 1u : 2u) +
+                        (m.tex.format == ZS_TEX_PAL8 ? 512u : 0u));
     }
     if (o.info_only)
         return 0;

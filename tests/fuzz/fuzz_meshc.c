@@ -8,8 +8,14 @@
  * (they would hide crashes from the fuzzer and starve ASan) and its messages
  * sent to /dev/null. Input: byte 0 picks the file type (the extension assimp
  * sees), byte 1 and 2 the options (--center/--normalize, --colors, --normals,
- * --no-merge, --flip-winding, --lenient, --max-triangles, the mesh name); the
- * rest is the model file, written to a scratch file and converted.
+ * --no-merge, --flip-winding, --lenient, --max-triangles, the mesh name; its
+ * bit 5 --texture auto, bit 6 --texture-format pal8); the rest is the model
+ * file, written to a scratch file and converted. With bit 7 of byte 0 the
+ * rest is an image instead (PNG, JPEG or TGA by bits 0-1: the name, not its
+ * bytes, picks the decoder tried first) that a fixed textured OBJ quad
+ * names: the image decoders and the resampler get the input. (Not .glb:
+ * assimp 5.2's glTF importer itself crashes on some, which the converter
+ * reports, see its signal handler, but in process that ends the fuzzer.)
  *
  * Invariants:
  *   - no memory error in the converter (ASan/UBSan; assimp itself is not
@@ -19,8 +25,10 @@
  *   - on success the generated C is a valid zs_mesh: array sizes match the
  *     counts, 1 <= counts <= 65535, every index < vertex_count, positions
  *     int16 (and |p| <= 32767), Q1.14 normals within +-16384, colours 24-bit,
- *     a positive Q16.16 scale, at most --max-triangles triangles; and the
- *     core accepts it: zs_draw returns ZS_OK and the statistics add up.
+ *     a positive Q16.16 scale, at most --max-triangles triangles, uvs and
+ *     texels (when textured) sized by the counts and the texture's powers of
+ *     two; and the core accepts it (with ZS_CFG_TEXTURE): zs_draw returns
+ *     ZS_OK and the statistics add up.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <setjmp.h>
@@ -267,7 +275,7 @@ static void check_output(const char *cpath, const char *name, unsigned long max_
 {
     size_t len;
     char *src = slurp(cpath, &len);
-    arr pos, idx, fc, vc, fn, vn;
+    arr pos, idx, fc, vc, fn, vn, uv, tx, pal;
     long scale = mesh_field(src, "/* scale, Q16.16 */");
     long nv = mesh_field(src, "/* vertex_count */");
     long nt = mesh_field(src, "/* triangle_count */");
@@ -278,6 +286,9 @@ static void check_output(const char *cpath, const char *name, unsigned long max_
     parse_array(src, name, "vertex_colors", &vc);
     parse_array(src, name, "face_normals", &fn);
     parse_array(src, name, "vertex_normals", &vn);
+    parse_array(src, name, "uvs", &uv);
+    parse_array(src, name, "texels", &tx);
+    parse_array(src, name, "palette", &pal);
     FZ_CHECK(nv >= 1 && nv <= 65535 && nt >= 1 && nt <= 65535, "counts %ld vertices %ld triangles",
              nv, nt);
     FZ_CHECK(!max_tris || (unsigned long)nt <= max_tris, "%ld triangles above --max-triangles %lu",
@@ -303,6 +314,31 @@ static void check_output(const char *cpath, const char *name, unsigned long max_
         FZ_CHECK(fn.v[i] >= -16384 && fn.v[i] <= 16384, "face normal value %ld", fn.v[i]);
     for (size_t i = 0; i < vn.n; i++)
         FZ_CHECK(vn.v[i] >= -16384 && vn.v[i] <= 16384, "vertex normal value %ld", vn.v[i]);
+    long tw = 0, th = 0;
+    FZ_CHECK(uv.present == tx.present, "uvs without texels or the other way round");
+    if (uv.present) {
+        char key[160];
+        const char *p;
+        FZ_CHECK(uv.n == 2u * (size_t)nv, "%zu uv values for %ld vertices", uv.n, nv);
+        for (size_t i = 0; i < uv.n; i++)
+            FZ_CHECK(uv.v[i] >= -32768 && uv.v[i] <= 32767, "uv %ld", uv.v[i]);
+        snprintf(key, sizeof key, "%s_texture = {", name);
+        p = strstr(src, key);
+        FZ_CHECK(p != NULL, "no %s", key);
+        p = strstr(p, "u, ");
+        FZ_CHECK(p != NULL, "no texture size");
+        while (p[-1] >= '0' && p[-1] <= '9')
+            p--;
+        tw = strtol(p, (char **)&p, 10);
+        th = strtol(p + 3, NULL, 10);
+        FZ_CHECK(tw >= 1 && tw <= 1024 && th >= 1 && th <= 1024 && !(tw & (tw - 1)) &&
+                     !(th & (th - 1)), "texture %ld x %ld", tw, th);
+        FZ_CHECK(tx.n == (size_t)(tw * th), "%zu texels for %ld x %ld", tx.n, tw, th);
+        FZ_CHECK(!pal.present || pal.n == 256, "%zu palette colours", pal.n);
+        for (size_t i = 0; i < tx.n; i++)
+            FZ_CHECK(tx.v[i] >= 0 && tx.v[i] <= (pal.present ? 255 : 65535), "texel %ld",
+                     tx.v[i]);
+    }
 
     /* the core takes it as it is */
     {
@@ -318,10 +354,36 @@ static void check_output(const char *cpath, const char *name, unsigned long max_
         for (size_t i = 0; i < vn.n; i++) vn16[i] = (int16_t)vn.v[i];
         for (size_t i = 0; i < fc.n; i++) fc32[i] = (zs_color)fc.v[i];
         for (size_t i = 0; i < vc.n; i++) vc32[i] = (zs_color)vc.v[i];
+        int16_t *uv16 = uv.present ? malloc(uv.n * sizeof *uv16 + 1) : NULL;
+        uint16_t *t16 = NULL, *pal16 = NULL;
+        uint8_t *t8 = NULL;
+        zs_texture tex;
+        memset(&tex, 0, sizeof tex);
+        for (size_t i = 0; i < uv.n; i++) uv16[i] = (int16_t)uv.v[i];
+        if (uv.present) {
+            tex.width = (uint16_t)tw;
+            tex.height = (uint16_t)th;
+            if (pal.present) {
+                t8 = malloc(tx.n + 1);
+                pal16 = malloc(256 * sizeof *pal16);
+                for (size_t i = 0; i < tx.n; i++) t8[i] = (uint8_t)tx.v[i];
+                for (size_t i = 0; i < 256; i++) pal16[i] = (uint16_t)pal.v[i];
+                tex.texels = t8;
+                tex.palette = pal16;
+                tex.format = ZS_TEX_PAL8;
+            } else {
+                t16 = malloc(tx.n * sizeof *t16 + 1);
+                for (size_t i = 0; i < tx.n; i++) t16[i] = (uint16_t)tx.v[i];
+                tex.texels = t16;
+                tex.format = ZS_TEX_RGB565;
+            }
+            FZ_CHECK(zs_texture_check(&tex) == ZS_OK, "the core refused the texture");
+        }
         zs_mesh m = {p16, i16, fc32, vc32, fn16, vn16, (zs_fixed)scale, (uint16_t)nv,
-                     (uint16_t)nt, (zs_color)color, NULL, NULL};
-        static uint8_t arena[ZS_ARENA_BYTES(32, 32, 4096, 4096, 64)];
+                     (uint16_t)nt, (zs_color)color, uv16, uv.present ? &tex : NULL};
+        static uint8_t arena[ZS_ARENA_BYTES_CFG(32, 32, 4096, 4096, 64, ZS_CFG_TEXTURE)];
         zs_config cfg = zs_config_default(32, 32, 4096, 4096, 64);
+        cfg.flags |= ZS_CFG_TEXTURE;
         zs_renderer r;
         zs_camera cam;
         FZ_CHECK(zs_init(&r, arena, sizeof arena, &cfg) == ZS_OK, "init");
@@ -350,8 +412,10 @@ static void check_output(const char *cpath, const char *name, unsigned long max_
         for (int y = 0; y < 32; y++)
             FZ_CHECK(zs_render_rows(&r, y, 1, line, sizeof line) == ZS_OK, "render");
         free(p16); free(i16); free(fn16); free(vn16); free(fc32); free(vc32);
+        free(uv16); free(t16); free(t8); free(pal16);
     }
     free(pos.v); free(idx.v); free(fc.v); free(vc.v); free(fn.v); free(vn.v);
+    free(uv.v); free(tx.v); free(pal.v);
     free(src);
 }
 
@@ -390,7 +454,29 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     uint8_t kind = fz_u8(&d), o1 = fz_u8(&d), o2 = fz_u8(&d);
     const char *ext = k_ext[kind % (sizeof k_ext / sizeof k_ext[0])];
     snprintf(path, sizeof path, "%s.%s", g_in, ext);
-    {
+    if (kind & 0x80u) { /* the input is the image of a fixed model */
+        static const char *const img_ext[] = {"png", "jpg", "tga", "png"};
+        char ipath[300], mpath[300];
+        const char *base = strrchr(g_in, '/') + 1;
+        FILE *f;
+        ext = "obj";
+        snprintf(path, sizeof path, "%s.obj", g_in);
+        snprintf(mpath, sizeof mpath, "%s.mtl", g_in);
+        snprintf(ipath, sizeof ipath, "%s.%s", g_in, img_ext[kind & 3u]);
+        f = fopen(mpath, "w");
+        FZ_CHECK(f != NULL, "cannot write %s", mpath);
+        fprintf(f, "newmtl m\nKd 1 1 1\nmap_Kd %s.%s\n", base, img_ext[kind & 3u]);
+        fclose(f);
+        f = fopen(path, "w");
+        FZ_CHECK(f != NULL, "cannot write %s", path);
+        fprintf(f, "mtllib %s.mtl\nusemtl m\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+                   "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n", base);
+        fclose(f);
+        f = fopen(ipath, "wb");
+        FZ_CHECK(f != NULL, "cannot write %s", ipath);
+        fwrite(data + d.pos, 1, fz_left(&d), f);
+        fclose(f);
+    } else {
         FILE *f = fopen(path, "wb");
         FZ_CHECK(f != NULL, "cannot write %s", path);
         fwrite(data + d.pos, 1, fz_left(&d), f);
@@ -436,6 +522,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         snprintf(maxt, sizeof maxt, "%lu", max_tris);
         argv[argc++] = "--max-triangles";
         argv[argc++] = maxt;
+    }
+    if (kind & 0xA0u) {
+        argv[argc++] = "--texture";
+        argv[argc++] = "auto";
+    }
+    if (kind & 0x40u) {
+        argv[argc++] = "--texture-format";
+        argv[argc++] = "pal8";
     }
     argv[argc++] = path;
     argv[argc] = NULL;

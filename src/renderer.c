@@ -26,8 +26,7 @@ static zs_status check_config(const zs_config *c)
     if (c->max_triangles == 0 || c->max_vertices == 0 || c->max_active_edges < 2 ||
         c->max_active_edges > ZS_MAX_ACTIVE_EDGES)
         return ZS_ERR_CAPACITY;
-    if (c->flags & ~(uint16_t)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES |
-                               ZS_CFG_PRIORITY | ZS_CFG_TEXTURE | ZS_CFG_ABUFFER))
+    if (c->flags & ~(uint16_t)ZS_CFG_ALL)
         return ZS_ERR_ARGUMENT;
     if ((c->flags & ZS_CFG_TEXTURE) && (c->flags & ZS_CFG_ABUFFER))
         return ZS_ERR_ARGUMENT; /* the resolve's fragments carry no texture (yet) */

@@ -167,6 +167,11 @@ const char *zs_strerror(zs_status status);
 
 #define ZS_CFG_ABUFFER 0x20u     /* A-buffer anti-aliasing and transparency
                                     (zs_frame_antialias): ZS_ABUFFER_BYTES */
+/* Every flag zs_init accepts; a bit outside it is ZS_ERR_ARGUMENT (one list,
+ * so that the core and its tests cannot disagree on which flags exist). */
+#define ZS_CFG_ALL                                                                 \
+    (ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES | ZS_CFG_PRIORITY | \
+     ZS_CFG_TEXTURE | ZS_CFG_ABUFFER)
 
 /* Sizes of the records the arena holds (checked against sizeof in src/). */
 #define ZS_VERTEX_BYTES 8u        /* screen x, y (28.4 in int16) and depth */

@@ -449,8 +449,7 @@ static int decode_scene(fz_reader *d, scene *s)
         unsigned allowed = 0;
 #ifdef ZS_CFG_NO_ZLINE
         c.flags = fz_u16(d);
-        if (c.flags & ~(unsigned)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES |
-                                  ZS_CFG_PRIORITY | ZS_CFG_TEXTURE | ZS_CFG_ABUFFER))
+        if (c.flags & ~(unsigned)ZS_CFG_ALL)
             allowed |= BIT(ZS_ERR_ARGUMENT);
         if ((c.flags & ZS_CFG_TEXTURE) && (c.flags & ZS_CFG_ABUFFER))
             allowed |= BIT(ZS_ERR_ARGUMENT); /* refused together (renderer.c) */
@@ -1104,7 +1103,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 
     size_t need = zs_arena_bytes(cfg);
 #ifdef ZS_CFG_NO_ZLINE
-    if (cfg->flags & ~(unsigned)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES)) {
+    if (cfg->flags & ~(unsigned)ZS_CFG_ALL) {
         static uint8_t some[64];
         zs_renderer r0;
         FZ_CHECK(need == 0, "zs_arena_bytes with unknown flags %#x = %zu", cfg->flags, need);

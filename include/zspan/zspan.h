@@ -186,8 +186,10 @@ const char *zs_strerror(zs_status status);
 #define ZS_MAX_FRAME_TEXTURES 16u /* distinct textures one frame may draw with */
 #define ZS_ARENA_ALIGN 8u
 
-/* Internal: n rounded up to a multiple of ZS_ARENA_ALIGN. */
-#define ZS_ROUND8_(n) (((size_t)(n) + 7u) & ~(size_t)7u)
+/* Internal: n rounded up to a multiple of ZS_ARENA_ALIGN, in the unsigned
+ * type T. */
+#define ZS_ROUND8_T_(T, n) (((T)(n) + 7u) & ~(T)7u)
+#define ZS_ROUND8_(n) ZS_ROUND8_T_(size_t, n)
 
 /* Bytes of arena for a screen of w x h pixels holding up to max_tris
  * triangle records and max_verts vertices per frame and max_edges active
@@ -201,37 +203,46 @@ const char *zs_strerror(zs_status status);
  * per triangle record and 2 B per vertex; with ZS_CFG_PRIORITY 4 B per
  * triangle record. */
 #define ZS_ARENA_BYTES_CFG(w, h, max_tris, max_verts, max_edges, flags)            \
-    (ZS_ROUND8_((size_t)(max_verts) * ZS_VERTEX_BYTES) +                            \
+    ZS_ARENA_BYTES_T_(size_t, w, h, max_tris, max_verts, max_edges, flags)
+
+/* Internal: ZS_ARENA_BYTES_CFG computed in the unsigned type T. The core
+ * takes it in uint32_t where size_t is 16 bits, to see a figure that size_t
+ * cannot hold (one expression for both, so they cannot drift apart). */
+#define ZS_ARENA_BYTES_T_(T, w, h, max_tris, max_verts, max_edges, flags)          \
+    (ZS_ROUND8_T_(T, (T)(max_verts) * ZS_VERTEX_BYTES) +                            \
      ((((flags) & (ZS_CFG_FLAT_ONLY | ZS_CFG_TEXTURE)) == ZS_CFG_FLAT_ONLY)         \
           ? 0u                                                                      \
-          : ZS_ROUND8_((size_t)(max_verts) * ZS_VERTEX_SHADE_BYTES)) +              \
-     ZS_ROUND8_((size_t)(max_tris) * ZS_TRIANGLE_BYTES) +                           \
-     ZS_ROUND8_((size_t)(h) * 2u) +                                                 \
-     ZS_ROUND8_((size_t)(max_edges) * ZS_EDGE_BYTES) +                              \
-     2u * ZS_ROUND8_((size_t)(max_edges) * 2u) +                                    \
-     ZS_ROUND8_((size_t)((max_edges) / 2u) * ZS_ACTIVE_BYTES) +                     \
+          : ZS_ROUND8_T_(T, (T)(max_verts) * ZS_VERTEX_SHADE_BYTES)) +              \
+     ZS_ROUND8_T_(T, (T)(max_tris) * ZS_TRIANGLE_BYTES) +                           \
+     ZS_ROUND8_T_(T, (T)(h) * 2u) +                                                 \
+     ZS_ROUND8_T_(T, (T)(max_edges) * ZS_EDGE_BYTES) +                              \
+     2u * ZS_ROUND8_T_(T, (T)(max_edges) * 2u) +                                    \
+     ZS_ROUND8_T_(T, (T)((max_edges) / 2u) * ZS_ACTIVE_BYTES) +                     \
      ((((flags) & (ZS_CFG_FLAT_ONLY | ZS_CFG_TEXTURE)) == ZS_CFG_FLAT_ONLY)         \
           ? 0u                                                                      \
-          : ZS_ROUND8_((size_t)((max_edges) / 2u) * ZS_ACTIVE_COLOR_BYTES)) +       \
-     2u * ZS_ROUND8_((size_t)((max_edges) / 2u) * 2u) +                             \
-     (((flags) & ZS_CFG_NO_ZLINE) ? 0u                                              \
-                                  : ZS_ROUND8_((size_t)(w) * 8u) + ZS_ROUND8_((size_t)(w) * 2u)) + \
-     (((flags) & (ZS_CFG_MONO | ZS_CFG_LINES)) ? ZS_ROUND8_((size_t)(w)) : 0u) +      \
-     (((flags) & ZS_CFG_MONO) ? ZS_ROUND8_((size_t)(w) * 2u) : 0u) +                \
-     (((flags) & ZS_CFG_LINES) ? 2u * ZS_ROUND8_((size_t)(w) * 2u) +                 \
-                                     (((flags) & ZS_CFG_MONO) ? 0u : ZS_ROUND8_((size_t)(w))) + \
-                                     ZS_ROUND8_((size_t)(max_tris) * ZS_TRI_NORMAL_BYTES) + \
-                                     ZS_ROUND8_(((size_t)(max_tris) + 7u) / 8u) +   \
-                                     ZS_ROUND8_((size_t)(max_tris) * 6u) +          \
-                                     ZS_ROUND8_((size_t)(max_verts) * 2u)           \
-                               : 0u) +                                              \
-     (((flags) & ZS_CFG_PRIORITY) ? 2u * ZS_ROUND8_((size_t)(max_tris) * 2u) : 0u) +   \
-     (((flags) & ZS_CFG_TEXTURE)                                                    \
-          ? ZS_ROUND8_((size_t)(max_verts) * ZS_TEX_VERTEX_BYTES) +                 \
-                ZS_ROUND8_((size_t)((max_edges) / 2u) * ZS_ACTIVE_TEX_BYTES) +      \
-                ZS_ROUND8_((size_t)ZS_MAX_FRAME_TEXTURES * sizeof(void *))          \
+          : ZS_ROUND8_T_(T, (T)((max_edges) / 2u) * ZS_ACTIVE_COLOR_BYTES)) +       \
+     2u * ZS_ROUND8_T_(T, (T)((max_edges) / 2u) * 2u) +                             \
+     (((flags) & ZS_CFG_NO_ZLINE)                                                   \
+          ? 0u                                                                      \
+          : ZS_ROUND8_T_(T, (T)(w) * 8u) + ZS_ROUND8_T_(T, (T)(w) * 2u)) +          \
+     (((flags) & (ZS_CFG_MONO | ZS_CFG_LINES)) ? ZS_ROUND8_T_(T, (T)(w)) : 0u) +     \
+     (((flags) & ZS_CFG_MONO) ? ZS_ROUND8_T_(T, (T)(w) * 2u) : 0u) +                \
+     (((flags) & ZS_CFG_LINES)                                                      \
+          ? 2u * ZS_ROUND8_T_(T, (T)(w) * 2u) +                                     \
+                (((flags) & ZS_CFG_MONO) ? 0u : ZS_ROUND8_T_(T, (T)(w))) +          \
+                ZS_ROUND8_T_(T, (T)(max_tris) * ZS_TRI_NORMAL_BYTES) +              \
+                ZS_ROUND8_T_(T, ((T)(max_tris) + 7u) / 8u) +                        \
+                ZS_ROUND8_T_(T, (T)(max_tris) * 6u) +                               \
+                ZS_ROUND8_T_(T, (T)(max_verts) * 2u)                                \
           : 0u) +                                                                   \
-     (((flags) & ZS_CFG_ABUFFER) ? ZS_ABUFFER_BYTES(w, h, max_tris, max_edges) : 0u) + \
+     (((flags) & ZS_CFG_PRIORITY) ? 2u * ZS_ROUND8_T_(T, (T)(max_tris) * 2u) : 0u) + \
+     (((flags) & ZS_CFG_TEXTURE)                                                    \
+          ? ZS_ROUND8_T_(T, (T)(max_verts) * ZS_TEX_VERTEX_BYTES) +                 \
+                ZS_ROUND8_T_(T, (T)((max_edges) / 2u) * ZS_ACTIVE_TEX_BYTES) +      \
+                ZS_ROUND8_T_(T, (T)ZS_MAX_FRAME_TEXTURES * (T)sizeof(void *))       \
+          : 0u) +                                                                   \
+     (((flags) & ZS_CFG_ABUFFER) ? ZS_ABUFFER_BYTES_T_(T, w, h, max_tris, max_edges) \
+                                 : 0u) +                                            \
      ZS_ARENA_ALIGN)
 
 /* ---- A-buffer (ZS_CFG_ABUFFER; src/abuffer.c) ----
@@ -252,15 +263,18 @@ const char *zs_strerror(zs_status status);
 #define ZS_ABUFFER_TRI_BYTES 184u
 #define ZS_ABUFFER_STATE_BYTES 96u
 #define ZS_ABUFFER_OPACITY_RUNS 16u
-#define ZS_ABUFFER_TRIS(max_edges) ((size_t)(max_edges) / 2u + (size_t)(max_edges) / 8u + 4u)
+#define ZS_ABUFFER_TRIS_T_(T, max_edges) ((T)(max_edges) / 2u + (T)(max_edges) / 8u + 4u)
+#define ZS_ABUFFER_TRIS(max_edges) ZS_ABUFFER_TRIS_T_(size_t, max_edges)
 #define ZS_ABUFFER_BYTES(w, h, max_tris, max_edges)                                 \
-    (ZS_ROUND8_(ZS_ABUFFER_STATE_BYTES) +                                            \
-     ZS_ROUND8_(ZS_ABUFFER_FRAGMENTS * ZS_ABUFFER_FRAGMENT_BYTES) +                  \
-     ZS_ROUND8_((size_t)(w)) + ZS_ROUND8_((size_t)(h) * 2u + 2u) +                  \
-     ZS_ROUND8_((size_t)(max_tris) * 3u) +                                          \
-     ZS_ROUND8_(ZS_ABUFFER_TRIS(max_edges) * ZS_ABUFFER_TRI_BYTES) +                 \
-     2u * ZS_ROUND8_(ZS_ABUFFER_TRIS(max_edges) * 2u) +                             \
-     ZS_ROUND8_(ZS_ABUFFER_OPACITY_RUNS * 4u))
+    ZS_ABUFFER_BYTES_T_(size_t, w, h, max_tris, max_edges)
+#define ZS_ABUFFER_BYTES_T_(T, w, h, max_tris, max_edges)                           \
+    (ZS_ROUND8_T_(T, ZS_ABUFFER_STATE_BYTES) +                                      \
+     ZS_ROUND8_T_(T, ZS_ABUFFER_FRAGMENTS * ZS_ABUFFER_FRAGMENT_BYTES) +            \
+     ZS_ROUND8_T_(T, (T)(w)) + ZS_ROUND8_T_(T, (T)(h) * 2u + 2u) +                  \
+     ZS_ROUND8_T_(T, (T)(max_tris) * 3u) +                                          \
+     ZS_ROUND8_T_(T, ZS_ABUFFER_TRIS_T_(T, max_edges) * ZS_ABUFFER_TRI_BYTES) +     \
+     2u * ZS_ROUND8_T_(T, ZS_ABUFFER_TRIS_T_(T, max_edges) * 2u) +                  \
+     ZS_ROUND8_T_(T, ZS_ABUFFER_OPACITY_RUNS * 4u))
 
 /* Both visibility modes, Gouraud and fog; no 1-bit output, no hidden lines. */
 #define ZS_ARENA_BYTES(w, h, max_tris, max_verts, max_edges)                        \

@@ -7,22 +7,57 @@
  * uses lives in one arena the caller provides; ZS_ARENA_BYTES() gives its size
  * at compile time.
  *
- * One frame:
+ * One frame: a triangle, RGB565 rows one at a time (this example is cut out
+ * of the header, compiled and run by make test: check-header-example):
  *
+ *     #include <string.h>
+ *     #include "zspan/zspan.h"
+ *
+ *     void send_row(int y, const uint8_t *row, size_t bytes); // to the panel
+ *
+ *     static const int16_t tri_pos[] = {-256, -256, 0, 256, -256, 0, 0, 256, 0};
+ *     static const uint16_t tri_idx[] = {0, 1, 2}; // counter-clockwise: front
  *     static uint8_t arena[ZS_ARENA_BYTES(240, 240, 1000, 800, 256)];
- *     zs_renderer r;
- *     zs_config cfg = zs_config_default(240, 240, 1000, 800, 256);
- *     zs_init(&r, arena, sizeof arena, &cfg);
  *
- *     zs_camera cam;
- *     zs_camera_look_at(&cam, eye, target, up);               // Q16.16 vectors
- *     zs_camera_perspective(&cam, ZS_FX(60), ZS_FX(1) / 10, ZS_FX(100));
+ *     zs_status draw_frame(void)
+ *     {
+ *         static zs_renderer r;
+ *         static uint8_t line[240 * 2]; // RGB565 big-endian, the default format
+ *         zs_config cfg = zs_config_default(240, 240, 1000, 800, 256);
+ *         zs_camera cam;
+ *         zs_mesh mesh;
+ *         zs_mat34 model = zs_mat34_translate(0, 0, ZS_FX(-3));
+ *         zs_status st;
+ *         int y;
  *
- *     zs_frame_begin(&r, &cam, ZS_MODE_SPAN);
- *     zs_draw(&r, &mesh, &model_matrix);                      // any number
- *     uint8_t line[240 * 2];
- *     for (int y = 0; y < 240; y++)
- *         zs_render_rows(&r, y, 1, line, sizeof line);        // send line to the panel
+ *         if ((st = zs_init(&r, arena, sizeof arena, &cfg)) != ZS_OK)
+ *             return st;
+ *         memset(&cam, 0, sizeof cam);
+ *         st = zs_camera_look_at(&cam, zs_vec3_make(0, 0, 0), zs_vec3_make(0, 0, ZS_FX(-1)),
+ *                                zs_vec3_make(0, ZS_FX(1), 0));
+ *         if (st == ZS_OK)
+ *             st = zs_camera_perspective(&cam, ZS_FX(60), ZS_FX(1) / 10, ZS_FX(100));
+ *         if (st != ZS_OK)
+ *             return st;
+ *
+ *         memset(&mesh, 0, sizeof mesh);
+ *         mesh.positions = tri_pos;       // int16 units of mesh.scale
+ *         mesh.indices = tri_idx;
+ *         mesh.scale = ZS_FX(1) / 256;
+ *         mesh.vertex_count = 3;
+ *         mesh.triangle_count = 1;
+ *         mesh.color = ZS_RGB(255, 160, 0);
+ *
+ *         if ((st = zs_frame_begin(&r, &cam, ZS_MODE_SPAN)) != ZS_OK ||
+ *             (st = zs_draw(&r, &mesh, &model)) != ZS_OK) // any number of draws
+ *             return st;
+ *         for (y = 0; y < 240; y++) {
+ *             if ((st = zs_render_rows(&r, y, 1, line, sizeof line)) != ZS_OK)
+ *                 return st;
+ *             send_row(y, line, sizeof line);
+ *         }
+ *         return ZS_OK;
+ *     }
  *
  * Conventions
  *  - Q16.16 fixed point (zs_fixed) for world quantities; ZS_FX(n) makes one.

@@ -1,10 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * zspan-i2c: the demo scene (or a mesh file) in 1 bit on an SSD1306 / SH1106
- * module on a Linux I2C bus (/dev/i2c-N, e.g. a Raspberry Pi's pins 3 and 5),
+ * zspan-i2c: the demo scene in 1 bit on an SSD1306 / SH1106 module on a
+ * Linux I2C bus (/dev/i2c-N, e.g. a Raspberry Pi's pins 3 and 5),
  * filled with ordered dithering or error diffusion, or as a hidden-line
  * drawing. The frame loop and the common options are zs_app's, as for
- * zspan-linux; this file is the bus.
+ * zspan-linux (built without mesh loading: no assimp); this file is the bus.
  *
  *   zspan-i2c [--bus /dev/i2c-1] [--addr 0x3C] [--panel ssd1306-128x64]
  *             [--frames N] [--rotation 0|2] [--diffuse] [--lines] [--quiet] ...
@@ -42,8 +42,8 @@ static void usage(FILE *f)
 {
     fprintf(f,
             "usage: %s [options]\n"
-            "Renders the zspan demo (or a mesh) in 1 bit on an SSD1306 / SH1106 module on a\n"
-            "Linux I2C bus (i2c-dev).\n\n"
+            "Renders the zspan demo in 1 bit on an SSD1306 / SH1106 module on a Linux I2C bus\n"
+            "(i2c-dev; built without mesh loading, so no --mesh).\n\n"
             "Wiring:\n"
             "  --bus /dev/i2c-N      I2C bus (default /dev/i2c-1)\n"
             "  --addr 0xNN           the module's address (default 0x3C)\n\n"

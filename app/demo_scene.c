@@ -312,6 +312,12 @@ zs_status demo_scene_draw(zs_renderer *r, const demo_scene *s)
 zs_status demo_frame(zs_renderer *r, const demo_scene *s, uint32_t frame, zs_visibility mode,
                      zs_shading shading, zs_format format)
 {
+    return demo_frame_mono(r, s, frame, mode, shading, format, 0);
+}
+
+zs_status demo_frame_mono(zs_renderer *r, const demo_scene *s, uint32_t frame,
+                          zs_visibility mode, zs_shading shading, zs_format format, unsigned mono)
+{
     zs_camera cam;
     zs_shade_params p;
     zs_status st;
@@ -323,6 +329,7 @@ zs_status demo_frame(zs_renderer *r, const demo_scene *s, uint32_t frame, zs_vis
     if (st != ZS_OK)
         return st;
     p = demo_shading(shading, format);
+    p.mono = (uint8_t)mono;
     st = zs_frame_shading(r, &p);
     if (st != ZS_OK)
         return st;

@@ -71,6 +71,10 @@ zs_status demo_scene_draw(zs_renderer *r, const demo_scene *s);
 
 /* All of a frame but the rows: camera, zs_frame_begin, zs_frame_shading and
  * demo_scene_draw. Then render the rows with zs_render_rows or zs_render_frame. */
+/* demo_frame with the 1-bit options ZS_MONO_* (zs_shade_params.mono) of a
+ * 1-bit or GRAY4 format. */
+zs_status demo_frame_mono(zs_renderer *r, const demo_scene *s, uint32_t frame,
+                          zs_visibility mode, zs_shading shading, zs_format format, unsigned mono);
 zs_status demo_frame(zs_renderer *r, const demo_scene *s, uint32_t frame, zs_visibility mode,
                      zs_shading shading, zs_format format);
 

@@ -41,13 +41,15 @@ typedef struct frame_bufs {
     int band, have_prev;
 } frame_bufs;
 
-static int bufs_alloc(frame_bufs *b, const zs_panel *lcd, unsigned bpp, long band, int async,
+static int bufs_alloc(frame_bufs *b, const zs_panel *lcd, zs_format fmt, long band, int async,
                       int partial)
 {
     memset(b, 0, sizeof *b);
-    b->stride = (size_t)lcd->width * bpp;
+    b->stride = zs_format_stride(fmt, lcd->width);
     b->band = band > lcd->height ? lcd->height : (int)band;
-    b->band_bytes = b->stride * (size_t)b->band;
+    if (fmt == ZS_FMT_MONO_PAGE) /* whole pages of 8 rows */
+        b->band = (b->band + 7) / 8 * 8;
+    b->band_bytes = zs_panel_window_bytes(fmt, lcd->width, (unsigned)b->band);
     b->b0 = malloc(b->band_bytes);
     if (async)
         b->b1 = malloc(b->band_bytes);
@@ -122,15 +124,10 @@ int zs_app_run(const zs_app_opts *o, zs_bus *bus, const zs_app_port *port, const
         fprintf(stderr, "%s: unknown panel '%s' (--list shows them)\n", prog, o->panel);
         return 2;
     }
-    fmt = o->format_set ? o->format
-                        : (zs_panel_bytes_per_pixel(d, ZS_FMT_RGB565_BE) ? ZS_FMT_RGB565_BE
-                                                                         : ZS_FMT_RGB666);
-    bpp = zs_panel_bytes_per_pixel(d, fmt);
-    if (bpp == 0) {
-        fprintf(stderr, "%s: %s does not take %s over SPI\n", prog, d->name,
-                fmt == ZS_FMT_RGB565_BE ? "rgb565" : "rgb666");
+    if (zs_app_check(o, prog) != 0)
         return 2;
-    }
+    fmt = zs_app_wire_format(o, d);
+    bpp = zs_panel_bytes_per_pixel(d, fmt); /* 0 for 1-bit pages (no partial updates) */
     wire = zs_wire_model_default(port->clock_hz ? port->clock_hz : d->max_spi_hz);
 
     t_start = now_s();
@@ -146,17 +143,20 @@ int zs_app_run(const zs_app_opts *o, zs_bus *bus, const zs_app_port *port, const
     }
     if (!o->quiet)
         printf("%s: %s %ux%u %s over %s, init %.0f ms\n", prog, d->name, lcd.width, lcd.height,
-               fmt == ZS_FMT_RGB565_BE ? "RGB565" : "RGB666", port->name,
-               (now_s() - t_start) * 1e3);
+               fmt == ZS_FMT_RGB565_BE ? "RGB565" : fmt == ZS_FMT_RGB666 ? "RGB666" : "1-bit",
+               port->name, (now_s() - t_start) * 1e3);
 
     if (zs_scene_load_meshes(&sc, o->meshes, o->nmeshes, o->shade, o->flip_winding, o->two_sided,
                              o->up_axis, prog) != 0)
         goto done;
+    sc.mono = o->mono;
     cfg = zs_app_config(lcd.width, lcd.height, sc.max_tris, 0, 0);
+    if (fmt == ZS_FMT_MONO_PAGE)
+        cfg.flags |= ZS_CFG_MONO | ZS_CFG_LINES;
     arena = zs_app_renderer(&r, &cfg, &arena_size, prog);
     if (arena == NULL)
         goto done;
-    if (bufs_alloc(&fb, &lcd, bpp, o->band, port->async, o->partial) != 0) {
+    if (bufs_alloc(&fb, &lcd, fmt, o->band, port->async, o->partial) != 0) {
         fprintf(stderr, "%s: out of memory\n", prog);
         goto done;
     }

@@ -37,6 +37,8 @@ typedef struct zs_app_opts {
     int flip_winding;     /* --mesh files with clockwise triangles */
     int two_sided;        /* draw the meshes' back faces too */
     int up_axis;          /* the mesh files' up axis (zs_opt_up_axis) */
+    unsigned mono;        /* 1-bit panels: ZS_MONO_DIFFUSE (--diffuse), ZS_MONO_LINES
+                             (--lines); 0 ordered dithering */
 } zs_app_opts;
 
 /* What the loop reports after each frame. */
@@ -72,6 +74,9 @@ typedef struct zs_app_cli {
     /* Its option at argv[*i], as zs_app_option: 1 consumed, 0 unknown, -1 bad. */
     int (*option)(void *cfg, int argc, char **argv, int *i);
     void *cfg;
+    /* The program's own defaults, set over zs_app_defaults' before the
+     * arguments are read. May be NULL. */
+    void (*defaults)(zs_app_opts *o);
 } zs_app_cli;
 
 /* zs_app_parse's result when the program should go on and run. */
@@ -86,6 +91,10 @@ int zs_app_parse(zs_app_opts *o, int argc, char **argv, const zs_app_cli *cli);
  * exists and takes the wire format. 0, or -1 after a message naming the
  * option (zs_app_parse calls it). */
 int zs_app_check(const zs_app_opts *o, const char *prog);
+
+/* The wire format: --format, else the panel's first of RGB565 (big-endian),
+ * RGB666 and 1-bit pages. */
+zs_format zs_app_wire_format(const zs_app_opts *o, const zs_panel_desc *d);
 
 /* Defaults; argc bounds the number of --mesh options. */
 void zs_app_defaults(zs_app_opts *o, int argc);
@@ -110,7 +119,9 @@ void zs_app_free(zs_app_opts *o);
     "  --shade flat|gouraud  shading (default gouraud)\n"                                    \
     "  --band N              rows per band (default 16)\n"                                   \
     "  --partial             after the first frame send only the rows that changed\n"        \
-    "                        (narrowed to the changed columns)\n"                            \
+    "                        (narrowed to the changed columns; not on 1-bit panels)\n"       \
+    "  --diffuse, --lines    1-bit panels: error diffusion, or a hidden-line drawing,\n"     \
+    "                        instead of ordered dithering\n"                                  \
     "  --brightness 0..255   backlight level (GPIO backlight: 0 off, else on; default 255)\n" \
     "  --quiet               only errors\n"                                            \
     "  --help, --version\n"

@@ -36,6 +36,8 @@ int zs_app_option(int argc, char **argv, int *i, zs_app_opts *o, const char *pro
     if (strcmp(a, "--list") == 0) { o->list = 1; return 1; }
     if (strcmp(a, "--flip-winding") == 0) { o->flip_winding = 1; return 1; }
     if (strcmp(a, "--two-sided") == 0) { o->two_sided = 1; return 1; }
+    if (strcmp(a, "--diffuse") == 0) { o->mono = ZS_MONO_DIFFUSE; return 1; }
+    if (strcmp(a, "--lines") == 0) { o->mono = ZS_MONO_LINES; return 1; }
     if ((m = zs_opt_value(argc, argv, i, "--up-axis", &v, prog)) != 0)
         return m < 0 || zs_opt_up_axis(prog, "--up-axis", v, &o->up_axis) != 0 ? -1 : 1;
 #define LONG_OPT(name, lo, hi, field)                                                          \
@@ -83,6 +85,8 @@ int zs_app_parse(zs_app_opts *o, int argc, char **argv, const zs_app_cli *cli)
     zs_app_defaults(o, argc);
     if (o->meshes == NULL)
         return 1;
+    if (cli->defaults != NULL)
+        cli->defaults(o);
     for (i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             cli->usage(stdout);
@@ -115,6 +119,17 @@ int zs_app_parse(zs_app_opts *o, int argc, char **argv, const zs_app_cli *cli)
     return ZS_APP_PARSED;
 }
 
+zs_format zs_app_wire_format(const zs_app_opts *o, const zs_panel_desc *d)
+{
+    if (o->format_set)
+        return o->format;
+    if (zs_panel_supports(d, ZS_FMT_RGB565_BE))
+        return ZS_FMT_RGB565_BE;
+    if (zs_panel_supports(d, ZS_FMT_RGB666))
+        return ZS_FMT_RGB666;
+    return ZS_FMT_MONO_PAGE;
+}
+
 int zs_app_check(const zs_app_opts *o, const char *prog)
 {
     const zs_panel_desc *d = zs_panel_find(o->panel);
@@ -124,12 +139,19 @@ int zs_app_check(const zs_app_opts *o, const char *prog)
         fprintf(stderr, "%s: --panel: unknown panel '%s' (--list shows them)\n", prog, o->panel);
         return -1;
     }
-    fmt = o->format_set ? o->format
-                        : (zs_panel_bytes_per_pixel(d, ZS_FMT_RGB565_BE) ? ZS_FMT_RGB565_BE
-                                                                         : ZS_FMT_RGB666);
-    if (zs_panel_bytes_per_pixel(d, fmt) == 0) {
-        fprintf(stderr, "%s: --format: %s does not take %s over SPI\n", prog, d->name,
-                fmt == ZS_FMT_RGB565_BE ? "rgb565" : "rgb666");
+    fmt = zs_app_wire_format(o, d);
+    if (!zs_panel_supports(d, fmt)) {
+        fprintf(stderr, "%s: --format: %s does not take %s\n", prog, d->name,
+                fmt == ZS_FMT_RGB565_BE ? "rgb565" : fmt == ZS_FMT_RGB666 ? "rgb666" : "1-bit pages");
+        return -1;
+    }
+    if (fmt == ZS_FMT_MONO_PAGE && o->partial) {
+        fprintf(stderr, "%s: --partial: not on a 1-bit panel (%s)\n", prog, d->name);
+        return -1;
+    }
+    if (fmt != ZS_FMT_MONO_PAGE && o->mono) {
+        fprintf(stderr, "%s: --diffuse and --lines are for 1-bit panels, not %s\n", prog,
+                d->name);
         return -1;
     }
     return 0;

@@ -872,7 +872,7 @@ oom:
 }
 
 zs_status zs_model_frame(zs_renderer *r, const zs_model *scene, zs_visibility mode,
-                          zs_shading shade, double deg, zs_format fmt)
+                          zs_shading shade, double deg, zs_format fmt, unsigned mono)
 {
     zs_camera cam;
     zs_shade_params sp = zs_shade_default();
@@ -889,6 +889,7 @@ zs_status zs_model_frame(zs_renderer *r, const zs_model *scene, zs_visibility mo
         return st;
     sp.shading = shade;
     sp.format = fmt;
+    sp.mono = (uint8_t)mono;
     sp.background = ZS_RGB(16, 20, 36);
     sp.ambient = ZS_FX_RATIO(3, 10);
     sp.light_count = 1;

@@ -132,9 +132,10 @@ int zs_model_fit_and_colour(zs_model *scene);
 
 /* Begins a frame of a loaded (quantised) scene as the animated viewers show
  * it: fixed camera and light, the scene tilted 15 degrees and turned by deg
- * about y; draws every chunk. */
+ * about y; draws every chunk. mono: the 1-bit options (ZS_MONO_*) of a 1-bit
+ * or GRAY4 fmt. */
 zs_status zs_model_frame(zs_renderer *r, const zs_model *scene, zs_visibility mode,
-                          zs_shading shade, double deg, zs_format fmt);
+                          zs_shading shade, double deg, zs_format fmt, unsigned mono);
 
 void zs_model_free(zs_model *scene);
 

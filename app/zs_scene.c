@@ -73,7 +73,8 @@ zs_status zs_scene_frame(zs_renderer *r, const zs_scene *s, long start, long k, 
 {
     if (s->demo != NULL) {
         long step = spin >= 3.0 ? lround(spin / 3.0) : (spin > 0.0 ? 1 : 0);
-        return demo_frame(r, s->demo, (uint32_t)(start + k * step), mode, shade, fmt);
+        return demo_frame_mono(r, s->demo, (uint32_t)(start + k * step), mode, shade, fmt,
+                               s->mono);
     }
 #ifdef ZS_APP_NO_MESH
     (void)start;
@@ -84,7 +85,7 @@ zs_status zs_scene_frame(zs_renderer *r, const zs_scene *s, long start, long k, 
     return ZS_ERR_STATE;
 #else
     return zs_model_frame(r, &s->model, mode, shade, fmod(spin * (double)(k + start), 360.0),
-                          fmt);
+                          fmt, s->mono);
 #endif
 }
 

@@ -18,6 +18,7 @@ typedef struct zs_scene {
     demo_scene *demo;   /* the demo, or NULL */
     zs_model model;     /* else the meshes */
     uint32_t max_tris;  /* triangle pool a frame needs (clipping splits some) */
+    unsigned mono;      /* ZS_MONO_* options of the frames' 1-bit format (0 none) */
 } zs_scene;
 
 /* The demo (nmeshes == 0) or the mesh files, with normals for Gouraud.

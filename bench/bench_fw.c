@@ -11,9 +11,11 @@
  * Command line (qemu -semihosting-config arg=...): "quick" renders frame 0 of
  * the first scene in both modes and in the three 1-bit outputs of
  * bench_mono_frame (the firmware test of make test); "rows"
- * forces the per-row timing below even when a framebuffer fits. For profiles:
- * a scene's name renders only that scene, "span" or "zline" only that mode,
- * "notex" skips the textured scene.
+ * forces the per-row timing below even when a framebuffer fits. Every run
+ * also renders the textured scene (bench_tex_frame) and its Warnock and
+ * A-buffer frames (bench_extra_frame), once each. For profiles: a scene's
+ * name renders only that scene, "span" or "zline" only that mode, "notex"
+ * skips the textured scene and the extra frames.
  *
  * Instructions are counted from SysTick ticks * the calibrated instructions
  * per tick (qemu -icount shift=0 runs one instruction per ns) around
@@ -233,6 +235,35 @@ int main(void)
                           (unsigned long)sum,
                           (unsigned long)(r.stats.tris_dropped + r.stats.verts_dropped +
                                           r.stats.records_skipped));
+            }
+        }
+    }
+    if (!notex) { /* Warnock and A-buffer frames of that scene (bench_extra_frame): host == M4 == M0 */
+        zs_config cfg = bench_extra_config();
+        size_t need = zs_arena_bytes(&cfg);
+        int k;
+        if (need > free_bytes || zs_init(&r, free_ram, need, &cfg) != ZS_OK) {
+            sh_printf("E %s textured a-buffer init need=%u free=%u\n", board, (unsigned)need,
+                      (unsigned)free_bytes);
+            errors++;
+        } else {
+            for (k = 0; k < BENCH_EXTRA_VARIANTS; k++) {
+                uint32_t sum = 0;
+                uint64_t a = port_ticks(), b;
+                zs_status st = bench_extra_frame(&r, &cam, k, &sum);
+                b = port_ticks();
+                if (st != ZS_OK) {
+                    sh_printf("E %s textured %s 0 %s\n", board, bench_extra_names[k],
+                              zs_strerror(st));
+                    errors++;
+                    continue;
+                }
+                sh_printf("R %s textured %s 0 instr=%lu sum=%08lx dropped=%lu\n", board,
+                          bench_extra_names[k], (unsigned long)((b - a) * ipt / 1000u),
+                          (unsigned long)sum,
+                          (unsigned long)(r.stats.tris_dropped + r.stats.verts_dropped +
+                                          r.stats.records_skipped + r.stats.aa_overflow +
+                                          r.stats.aa_skipped));
             }
         }
     }

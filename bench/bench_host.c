@@ -218,6 +218,31 @@ int main(int argc, char **argv)
                                            tr.stats.records_skipped));
                 }
             }
+            if (mono) { /* the firmware test's Warnock and A-buffer frames */
+                static zs_renderer er;
+                static uint8_t earena[64 * 1024];
+                zs_config ec = bench_extra_config();
+                int k;
+                if (zs_arena_bytes(&ec) > sizeof earena ||
+                    zs_init(&er, earena, sizeof earena, &ec) != ZS_OK) {
+                    fprintf(stderr, "bench_host: A-buffer init failed\n");
+                    return 1;
+                }
+                for (k = 0; k < BENCH_EXTRA_VARIANTS; k++) {
+                    uint32_t sum = 0;
+                    zs_status st = bench_extra_frame(&er, &cam, k, &sum);
+                    if (st != ZS_OK) {
+                        fprintf(stderr, "bench_host: textured %s: %s\n", bench_extra_names[k],
+                                zs_strerror(st));
+                        return 1;
+                    }
+                    printf("R host textured %s 0 sum=%08lx dropped=%lu\n", bench_extra_names[k],
+                           (unsigned long)sum,
+                           (unsigned long)(er.stats.tris_dropped + er.stats.verts_dropped +
+                                           er.stats.records_skipped + er.stats.aa_overflow +
+                                           er.stats.aa_skipped));
+                }
+            }
             if (mono) { /* the firmware test's 1-bit frames (bench_mono_frame) */
                 static zs_renderer mr;
                 static uint8_t marena[64 * 1024];

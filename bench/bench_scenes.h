@@ -73,6 +73,17 @@ extern const char *const bench_tex_names[BENCH_TEX_VARIANTS];
 zs_config bench_tex_config(void);
 zs_status bench_tex_frame(zs_renderer *r, const zs_camera *cam, int k, uint32_t *sum,
                           uint32_t *covered);
+/* Warnock mode and the A-buffer in the host == M4 == M0 checksum test: the
+ * textured scene's geometry in flat colours (as "tex-plain"), variant k: 0
+ * "warnock" (ZS_MODE_WARNOCK: the same bytes as "tex-plain"), 1 "aa-edges"
+ * (span mode, ZS_AA_EDGES), 2 "aa-transparent" (ZS_AA_TRANSPARENT, the cube
+ * at opacity 160 over the ground). The renderer: bench_extra_config() (pools
+ * for the scene, with ZS_CFG_ABUFFER). The checksum as
+ * bench_tex_frame's. */
+#define BENCH_EXTRA_VARIANTS 3
+extern const char *const bench_extra_names[BENCH_EXTRA_VARIANTS];
+zs_config bench_extra_config(void);
+zs_status bench_extra_frame(zs_renderer *r, const zs_camera *cam, int k, uint32_t *sum);
 /* FNV-1a 32 of n bytes, continuing from h. */
 uint32_t bench_fnv1a(uint32_t h, const uint8_t *p, size_t n);
 

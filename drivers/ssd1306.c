@@ -160,45 +160,18 @@ static zs_panel_status sh1106_write_begin(zs_panel *p, size_t n)
     return send(p, c, 3);
 }
 
-const zs_panel_ops zs_panel_ops_ssd1306 = {
-    .name = "SSD1306",
-    .check = NULL,
-    .init = ssd1306_init,
-    .format = oled_format,
-    .orient = oled_orient,
-    .invert = oled_invert,
-    .display = oled_display,
-    .window = ssd1306_window,
-    .write_begin = NULL,
-    .encoder = NULL,
-    .frame_end = NULL,
-};
+/* The three controllers share their commands; their tables differ in the
+ * power-up and the addressing only (the SSD0303 addresses its RAM like the
+ * SH1106: page mode only). */
+#define OLED_OPS(label, init_fn, window_fn, write_begin_fn)                                     \
+    {                                                                                          \
+        .name = label, .check = NULL, .init = init_fn, .format = oled_format,                  \
+        .orient = oled_orient, .invert = oled_invert, .display = oled_display,                 \
+        .window = window_fn, .write_begin = write_begin_fn, .encoder = NULL, .frame_end = NULL \
+    }
 
-const zs_panel_ops zs_panel_ops_sh1106 = {
-    .name = "SH1106",
-    .check = NULL,
-    .init = sh1106_init,
-    .format = oled_format,
-    .orient = oled_orient,
-    .invert = oled_invert,
-    .display = oled_display,
-    .window = sh1106_window,
-    .write_begin = sh1106_write_begin,
-    .encoder = NULL,
-    .frame_end = NULL,
-};
-
-/* The SSD0303 addresses its RAM like the SH1106 (page mode only). */
-const zs_panel_ops zs_panel_ops_ssd0303 = {
-    .name = "SSD0303",
-    .check = NULL,
-    .init = ssd0303_init,
-    .format = oled_format,
-    .orient = oled_orient,
-    .invert = oled_invert,
-    .display = oled_display,
-    .window = sh1106_window,
-    .write_begin = sh1106_write_begin,
-    .encoder = NULL,
-    .frame_end = NULL,
-};
+const zs_panel_ops zs_panel_ops_ssd1306 = OLED_OPS("SSD1306", ssd1306_init, ssd1306_window, NULL);
+const zs_panel_ops zs_panel_ops_sh1106 =
+    OLED_OPS("SH1106", sh1106_init, sh1106_window, sh1106_write_begin);
+const zs_panel_ops zs_panel_ops_ssd0303 =
+    OLED_OPS("SSD0303", ssd0303_init, sh1106_window, sh1106_write_begin);

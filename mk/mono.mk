@@ -66,8 +66,11 @@ check-no-mono: | deps
 # zspan-i2c: the demo on an SSD1306/SH1106 over /dev/i2c-N (Raspberry Pi).
 I2C_PROG := $(BUILD)/zspan-i2c
 ALL_TARGETS += $(I2C_PROG)
+# The frame loop is the application layer's (zs_app), as for zspan-linux;
+# no mesh loading (ZS_APP_NO_MESH: no assimp on a small board).
+I2C_APP_SRCS := $(filter-out app/zs_model.c app/zs_import.c,$(APP_SRCS))
 $(I2C_PROG): ports/linux/zspan-i2c.c ports/linux/i2c_bus.c ports/linux/zs_linux_i2c.h \
-             app/demo_scene.c app/demo_scene.h $(PANELS_LIB) $(LIB) | deps
+             $(I2C_APP_SRCS) $(wildcard app/*.h) $(PANELS_LIB) $(LIB) | deps
 	@mkdir -p $(@D)
-	$(CC) -std=gnu99 -Wall -Wextra -Werror -O2 -g -Iinclude -Iapp -Iports/linux -o $@ \
-	    ports/linux/zspan-i2c.c ports/linux/i2c_bus.c app/demo_scene.c $(PANELS_LIB) $(LIB)
+	$(CC) -std=gnu99 -Wall -Wextra -Werror -O2 -g -DZS_APP_NO_MESH -Iinclude -Iapp -Iports/linux \
+	    -o $@ ports/linux/zspan-i2c.c ports/linux/i2c_bus.c $(I2C_APP_SRCS) $(PANELS_LIB) $(LIB) -lm

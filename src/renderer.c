@@ -26,9 +26,7 @@ static zs_status check_config(const zs_config *c)
     if (c->max_triangles == 0 || c->max_vertices == 0 || c->max_active_edges < 2 ||
         c->max_active_edges > ZS_MAX_ACTIVE_EDGES)
         return ZS_ERR_CAPACITY;
-    if (c->flags & ~(uint16_t)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES |
-                               ZS_CFG_PRIORITY | ZS_CFG_TEXTURE | ZS_CFG_ABUFFER |
-                               ZS_CFG_PRIORITY_ONLY))
+    if (c->flags & ~(uint16_t)ZS_CFG_ALL)
         return ZS_ERR_ARGUMENT;
     if ((c->flags & ZS_CFG_PRIORITY_ONLY) && (c->flags & ZS_CFG_ABUFFER))
         return ZS_ERR_ARGUMENT; /* the resolve decides by depth */
@@ -40,33 +38,10 @@ static zs_status check_config(const zs_config *c)
 #if SIZE_MAX < 0xFFFFFFFFu
 /* ZS_ARENA_BYTES_CFG in 32 bits: with a 16-bit size_t (AVR) the figure of a
  * large configuration would wrap to a small one. */
-#define ROUND8_32(n) (((uint32_t)(n) + 7u) & ~(uint32_t)7u)
 static uint32_t arena_bytes32(const zs_config *c)
 {
-    uint32_t e = c->max_active_edges, a = e / 2u, n;
-    int flat = (c->flags & ZS_CFG_FLAT_ONLY) != 0;
-    n = ROUND8_32((uint32_t)c->max_vertices * ZS_VERTEX_BYTES) +
-        (flat && !(c->flags & ZS_CFG_TEXTURE) ? 0u : ROUND8_32((uint32_t)c->max_vertices * ZS_VERTEX_SHADE_BYTES)) +
-        ROUND8_32((uint32_t)c->max_triangles * ZS_TRIANGLE_BYTES) +
-        ROUND8_32((uint32_t)c->height * 2u) + ROUND8_32(e * ZS_EDGE_BYTES) +
-        2u * ROUND8_32(e * 2u) + ROUND8_32(a * ZS_ACTIVE_BYTES) +
-        ((c->flags & ZS_CFG_PRIORITY_ONLY) ? 0u : ROUND8_32(a * ZS_ACTIVE_PLANE_BYTES)) +
-        (flat && !(c->flags & ZS_CFG_TEXTURE) ? 0u : ROUND8_32(a * ZS_ACTIVE_COLOR_BYTES)) +
-        2u * ROUND8_32(a * 2u) +
-        ((c->flags & ZS_CFG_NO_ZLINE)
-             ? 0u
-             : ROUND8_32((uint32_t)c->width * 8u) + ROUND8_32((uint32_t)c->width * 2u + 2u)) +
-        ((c->flags & ZS_CFG_PRIORITY) ? 2u * ROUND8_32((uint32_t)c->max_triangles * 2u) : 0u) +
-        ((c->flags & ZS_CFG_TEXTURE)
-             ? ROUND8_32((uint32_t)c->max_vertices * ZS_TEX_VERTEX_BYTES) +
-                   ROUND8_32(a * ZS_ACTIVE_TEX_BYTES) +
-                   ROUND8_32(ZS_MAX_FRAME_TEXTURES * (uint32_t)sizeof(void *))
-             : 0u) +
-        ((c->flags & ZS_CFG_ABUFFER) ? (uint32_t)ZS_ABUFFER_BYTES(c->width, c->height,
-                                                                   c->max_triangles, e)
-                                     : 0u) +
-        ZS_ARENA_ALIGN;
-    return n;
+    return ZS_ARENA_BYTES_T_(uint32_t, c->width, c->height, c->max_triangles, c->max_vertices,
+                             c->max_active_edges, c->flags);
 }
 #endif
 

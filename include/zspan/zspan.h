@@ -7,22 +7,57 @@
  * uses lives in one arena the caller provides; ZS_ARENA_BYTES() gives its size
  * at compile time.
  *
- * One frame:
+ * One frame: a triangle, RGB565 rows one at a time (this example is cut out
+ * of the header, compiled and run by make test: check-header-example):
  *
+ *     #include <string.h>
+ *     #include "zspan/zspan.h"
+ *
+ *     void send_row(int y, const uint8_t *row, size_t bytes); // to the panel
+ *
+ *     static const int16_t tri_pos[] = {-256, -256, 0, 256, -256, 0, 0, 256, 0};
+ *     static const uint16_t tri_idx[] = {0, 1, 2}; // counter-clockwise: front
  *     static uint8_t arena[ZS_ARENA_BYTES(240, 240, 1000, 800, 256)];
- *     zs_renderer r;
- *     zs_config cfg = zs_config_default(240, 240, 1000, 800, 256);
- *     zs_init(&r, arena, sizeof arena, &cfg);
  *
- *     zs_camera cam;
- *     zs_camera_look_at(&cam, eye, target, up);               // Q16.16 vectors
- *     zs_camera_perspective(&cam, ZS_FX(60), ZS_FX(1) / 10, ZS_FX(100));
+ *     zs_status draw_frame(void)
+ *     {
+ *         static zs_renderer r;
+ *         static uint8_t line[240 * 2]; // RGB565 big-endian, the default format
+ *         zs_config cfg = zs_config_default(240, 240, 1000, 800, 256);
+ *         zs_camera cam;
+ *         zs_mesh mesh;
+ *         zs_mat34 model = zs_mat34_translate(0, 0, ZS_FX(-3));
+ *         zs_status st;
+ *         int y;
  *
- *     zs_frame_begin(&r, &cam, ZS_MODE_SPAN);
- *     zs_draw(&r, &mesh, &model_matrix);                      // any number
- *     uint8_t line[240 * 2];
- *     for (int y = 0; y < 240; y++)
- *         zs_render_rows(&r, y, 1, line, sizeof line);        // send line to the panel
+ *         if ((st = zs_init(&r, arena, sizeof arena, &cfg)) != ZS_OK)
+ *             return st;
+ *         memset(&cam, 0, sizeof cam);
+ *         st = zs_camera_look_at(&cam, zs_vec3_make(0, 0, 0), zs_vec3_make(0, 0, ZS_FX(-1)),
+ *                                zs_vec3_make(0, ZS_FX(1), 0));
+ *         if (st == ZS_OK)
+ *             st = zs_camera_perspective(&cam, ZS_FX(60), ZS_FX(1) / 10, ZS_FX(100));
+ *         if (st != ZS_OK)
+ *             return st;
+ *
+ *         memset(&mesh, 0, sizeof mesh);
+ *         mesh.positions = tri_pos;       // int16 units of mesh.scale
+ *         mesh.indices = tri_idx;
+ *         mesh.scale = ZS_FX(1) / 256;
+ *         mesh.vertex_count = 3;
+ *         mesh.triangle_count = 1;
+ *         mesh.color = ZS_RGB(255, 160, 0);
+ *
+ *         if ((st = zs_frame_begin(&r, &cam, ZS_MODE_SPAN)) != ZS_OK ||
+ *             (st = zs_draw(&r, &mesh, &model)) != ZS_OK) // any number of draws
+ *             return st;
+ *         for (y = 0; y < 240; y++) {
+ *             if ((st = zs_render_rows(&r, y, 1, line, sizeof line)) != ZS_OK)
+ *                 return st;
+ *             send_row(y, line, sizeof line);
+ *         }
+ *         return ZS_OK;
+ *     }
  *
  * Conventions
  *  - Q16.16 fixed point (zs_fixed) for world quantities; ZS_FX(n) makes one.
@@ -171,6 +206,11 @@ const char *zs_strerror(zs_status status);
                                     triangle (24 B each saved); every mode but
                                     ZS_MODE_PRIORITY is refused (ZS_ERR_MODE), and
                                     so is ZS_CFG_ABUFFER (ZS_ERR_ARGUMENT) */
+/* Every flag zs_init accepts; a bit outside it is ZS_ERR_ARGUMENT (one list,
+ * so that the core and its tests cannot disagree on which flags exist). */
+#define ZS_CFG_ALL                                                                 \
+    (ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES | ZS_CFG_PRIORITY | \
+     ZS_CFG_TEXTURE | ZS_CFG_ABUFFER | ZS_CFG_PRIORITY_ONLY)
 
 /* Sizes of the records the arena holds (checked against sizeof in src/). */
 #define ZS_VERTEX_BYTES 8u        /* screen x, y (28.4 in int16) and depth */
@@ -187,8 +227,10 @@ const char *zs_strerror(zs_status status);
 #define ZS_MAX_FRAME_TEXTURES 16u /* distinct textures one frame may draw with */
 #define ZS_ARENA_ALIGN 8u
 
-/* Internal: n rounded up to a multiple of ZS_ARENA_ALIGN. */
-#define ZS_ROUND8_(n) (((size_t)(n) + 7u) & ~(size_t)7u)
+/* Internal: n rounded up to a multiple of ZS_ARENA_ALIGN, in the unsigned
+ * type T. */
+#define ZS_ROUND8_T_(T, n) (((T)(n) + 7u) & ~(T)7u)
+#define ZS_ROUND8_(n) ZS_ROUND8_T_(size_t, n)
 
 /* Bytes of arena for a screen of w x h pixels holding up to max_tris
  * triangle records and max_verts vertices per frame and max_edges active
@@ -203,40 +245,49 @@ const char *zs_strerror(zs_status status);
  * per triangle record and 2 B per vertex; with ZS_CFG_PRIORITY 4 B per
  * triangle record. */
 #define ZS_ARENA_BYTES_CFG(w, h, max_tris, max_verts, max_edges, flags)            \
-    (ZS_ROUND8_((size_t)(max_verts) * ZS_VERTEX_BYTES) +                            \
+    ZS_ARENA_BYTES_T_(size_t, w, h, max_tris, max_verts, max_edges, flags)
+
+/* Internal: ZS_ARENA_BYTES_CFG computed in the unsigned type T. The core
+ * takes it in uint32_t where size_t is 16 bits, to see a figure that size_t
+ * cannot hold (one expression for both, so they cannot drift apart). */
+#define ZS_ARENA_BYTES_T_(T, w, h, max_tris, max_verts, max_edges, flags)          \
+    (ZS_ROUND8_T_(T, (T)(max_verts) * ZS_VERTEX_BYTES) +                            \
      ((((flags) & (ZS_CFG_FLAT_ONLY | ZS_CFG_TEXTURE)) == ZS_CFG_FLAT_ONLY)         \
           ? 0u                                                                      \
-          : ZS_ROUND8_((size_t)(max_verts) * ZS_VERTEX_SHADE_BYTES)) +              \
-     ZS_ROUND8_((size_t)(max_tris) * ZS_TRIANGLE_BYTES) +                           \
-     ZS_ROUND8_((size_t)(h) * 2u) +                                                 \
-     ZS_ROUND8_((size_t)(max_edges) * ZS_EDGE_BYTES) +                              \
-     2u * ZS_ROUND8_((size_t)(max_edges) * 2u) +                                    \
-     ZS_ROUND8_((size_t)((max_edges) / 2u) * ZS_ACTIVE_BYTES) +                     \
+          : ZS_ROUND8_T_(T, (T)(max_verts) * ZS_VERTEX_SHADE_BYTES)) +              \
+     ZS_ROUND8_T_(T, (T)(max_tris) * ZS_TRIANGLE_BYTES) +                           \
+     ZS_ROUND8_T_(T, (T)(h) * 2u) +                                                 \
+     ZS_ROUND8_T_(T, (T)(max_edges) * ZS_EDGE_BYTES) +                              \
+     2u * ZS_ROUND8_T_(T, (T)(max_edges) * 2u) +                                    \
+     ZS_ROUND8_T_(T, (T)((max_edges) / 2u) * ZS_ACTIVE_BYTES) +                     \
      (((flags) & ZS_CFG_PRIORITY_ONLY)                                              \
           ? 0u                                                                      \
-          : ZS_ROUND8_((size_t)((max_edges) / 2u) * ZS_ACTIVE_PLANE_BYTES)) +       \
+          : ZS_ROUND8_T_(T, (T)((max_edges) / 2u) * ZS_ACTIVE_PLANE_BYTES)) +       \
      ((((flags) & (ZS_CFG_FLAT_ONLY | ZS_CFG_TEXTURE)) == ZS_CFG_FLAT_ONLY)         \
           ? 0u                                                                      \
-          : ZS_ROUND8_((size_t)((max_edges) / 2u) * ZS_ACTIVE_COLOR_BYTES)) +       \
-     2u * ZS_ROUND8_((size_t)((max_edges) / 2u) * 2u) +                             \
-     (((flags) & ZS_CFG_NO_ZLINE) ? 0u                                              \
-                                  : ZS_ROUND8_((size_t)(w) * 8u) + ZS_ROUND8_((size_t)(w) * 2u + 2u)) + \
-     (((flags) & (ZS_CFG_MONO | ZS_CFG_LINES)) ? ZS_ROUND8_((size_t)(w)) : 0u) +      \
-     (((flags) & ZS_CFG_MONO) ? ZS_ROUND8_((size_t)(w) * 2u) : 0u) +                \
-     (((flags) & ZS_CFG_LINES) ? 2u * ZS_ROUND8_((size_t)(w) * 2u) +                 \
-                                     (((flags) & ZS_CFG_MONO) ? 0u : ZS_ROUND8_((size_t)(w))) + \
-                                     ZS_ROUND8_((size_t)(max_tris) * ZS_TRI_NORMAL_BYTES) + \
-                                     ZS_ROUND8_(((size_t)(max_tris) + 7u) / 8u) +   \
-                                     ZS_ROUND8_((size_t)(max_tris) * 6u) +          \
-                                     ZS_ROUND8_((size_t)(max_verts) * 2u)           \
-                               : 0u) +                                              \
-     (((flags) & ZS_CFG_PRIORITY) ? 2u * ZS_ROUND8_((size_t)(max_tris) * 2u) : 0u) +   \
-     (((flags) & ZS_CFG_TEXTURE)                                                    \
-          ? ZS_ROUND8_((size_t)(max_verts) * ZS_TEX_VERTEX_BYTES) +                 \
-                ZS_ROUND8_((size_t)((max_edges) / 2u) * ZS_ACTIVE_TEX_BYTES) +      \
-                ZS_ROUND8_((size_t)ZS_MAX_FRAME_TEXTURES * sizeof(void *))          \
+          : ZS_ROUND8_T_(T, (T)((max_edges) / 2u) * ZS_ACTIVE_COLOR_BYTES)) +       \
+     2u * ZS_ROUND8_T_(T, (T)((max_edges) / 2u) * 2u) +                             \
+     (((flags) & ZS_CFG_NO_ZLINE)                                                   \
+          ? 0u                                                                      \
+          : ZS_ROUND8_T_(T, (T)(w) * 8u) + ZS_ROUND8_T_(T, (T)(w) * 2u + 2u)) +     \
+     (((flags) & (ZS_CFG_MONO | ZS_CFG_LINES)) ? ZS_ROUND8_T_(T, (T)(w)) : 0u) +     \
+     (((flags) & ZS_CFG_MONO) ? ZS_ROUND8_T_(T, (T)(w) * 2u) : 0u) +                \
+     (((flags) & ZS_CFG_LINES)                                                      \
+          ? 2u * ZS_ROUND8_T_(T, (T)(w) * 2u) +                                     \
+                (((flags) & ZS_CFG_MONO) ? 0u : ZS_ROUND8_T_(T, (T)(w))) +          \
+                ZS_ROUND8_T_(T, (T)(max_tris) * ZS_TRI_NORMAL_BYTES) +              \
+                ZS_ROUND8_T_(T, ((T)(max_tris) + 7u) / 8u) +                        \
+                ZS_ROUND8_T_(T, (T)(max_tris) * 6u) +                               \
+                ZS_ROUND8_T_(T, (T)(max_verts) * 2u)                                \
           : 0u) +                                                                   \
-     (((flags) & ZS_CFG_ABUFFER) ? ZS_ABUFFER_BYTES(w, h, max_tris, max_edges) : 0u) + \
+     (((flags) & ZS_CFG_PRIORITY) ? 2u * ZS_ROUND8_T_(T, (T)(max_tris) * 2u) : 0u) + \
+     (((flags) & ZS_CFG_TEXTURE)                                                    \
+          ? ZS_ROUND8_T_(T, (T)(max_verts) * ZS_TEX_VERTEX_BYTES) +                 \
+                ZS_ROUND8_T_(T, (T)((max_edges) / 2u) * ZS_ACTIVE_TEX_BYTES) +      \
+                ZS_ROUND8_T_(T, (T)ZS_MAX_FRAME_TEXTURES * (T)sizeof(void *))       \
+          : 0u) +                                                                   \
+     (((flags) & ZS_CFG_ABUFFER) ? ZS_ABUFFER_BYTES_T_(T, w, h, max_tris, max_edges) \
+                                 : 0u) +                                            \
      ZS_ARENA_ALIGN)
 
 /* ---- A-buffer (ZS_CFG_ABUFFER; src/abuffer.c) ----
@@ -257,15 +308,18 @@ const char *zs_strerror(zs_status status);
 #define ZS_ABUFFER_TRI_BYTES 184u
 #define ZS_ABUFFER_STATE_BYTES 96u
 #define ZS_ABUFFER_OPACITY_RUNS 16u
-#define ZS_ABUFFER_TRIS(max_edges) ((size_t)(max_edges) / 2u + (size_t)(max_edges) / 8u + 4u)
+#define ZS_ABUFFER_TRIS_T_(T, max_edges) ((T)(max_edges) / 2u + (T)(max_edges) / 8u + 4u)
+#define ZS_ABUFFER_TRIS(max_edges) ZS_ABUFFER_TRIS_T_(size_t, max_edges)
 #define ZS_ABUFFER_BYTES(w, h, max_tris, max_edges)                                 \
-    (ZS_ROUND8_(ZS_ABUFFER_STATE_BYTES) +                                            \
-     ZS_ROUND8_(ZS_ABUFFER_FRAGMENTS * ZS_ABUFFER_FRAGMENT_BYTES) +                  \
-     ZS_ROUND8_((size_t)(w)) + ZS_ROUND8_((size_t)(h) * 2u + 2u) +                  \
-     ZS_ROUND8_((size_t)(max_tris) * 3u) +                                          \
-     ZS_ROUND8_(ZS_ABUFFER_TRIS(max_edges) * ZS_ABUFFER_TRI_BYTES) +                 \
-     2u * ZS_ROUND8_(ZS_ABUFFER_TRIS(max_edges) * 2u) +                             \
-     ZS_ROUND8_(ZS_ABUFFER_OPACITY_RUNS * 4u))
+    ZS_ABUFFER_BYTES_T_(size_t, w, h, max_tris, max_edges)
+#define ZS_ABUFFER_BYTES_T_(T, w, h, max_tris, max_edges)                           \
+    (ZS_ROUND8_T_(T, ZS_ABUFFER_STATE_BYTES) +                                      \
+     ZS_ROUND8_T_(T, ZS_ABUFFER_FRAGMENTS * ZS_ABUFFER_FRAGMENT_BYTES) +            \
+     ZS_ROUND8_T_(T, (T)(w)) + ZS_ROUND8_T_(T, (T)(h) * 2u + 2u) +                  \
+     ZS_ROUND8_T_(T, (T)(max_tris) * 3u) +                                          \
+     ZS_ROUND8_T_(T, ZS_ABUFFER_TRIS_T_(T, max_edges) * ZS_ABUFFER_TRI_BYTES) +     \
+     2u * ZS_ROUND8_T_(T, ZS_ABUFFER_TRIS_T_(T, max_edges) * 2u) +                  \
+     ZS_ROUND8_T_(T, ZS_ABUFFER_OPACITY_RUNS * 4u))
 
 /* Both visibility modes, Gouraud and fog; no 1-bit output, no hidden lines. */
 #define ZS_ARENA_BYTES(w, h, max_tris, max_verts, max_edges)                        \

@@ -1,11 +1,13 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * zspan-i2c: the demo scene in 1 bit on an SSD1306 / SH1106 module on a
- * Linux I2C bus (/dev/i2c-N, e.g. a Raspberry Pi's pins 3 and 5), filled
- * with ordered dithering or error diffusion, or as a hidden-line drawing.
+ * Linux I2C bus (/dev/i2c-N, e.g. a Raspberry Pi's pins 3 and 5),
+ * filled with ordered dithering or error diffusion, or as a hidden-line
+ * drawing. The frame loop and the common options are zs_app's, as for
+ * zspan-linux (built without mesh loading: no assimp); this file is the bus.
  *
  *   zspan-i2c [--bus /dev/i2c-1] [--addr 0x3C] [--panel ssd1306-128x64]
- *             [--frames N] [--rotation 0|2] [--diffuse] [--lines] [--quiet]
+ *             [--frames N] [--rotation 0|2] [--diffuse] [--lines] [--quiet] ...
  *
  * Exit status: 0 done, 1 failure, 2 bad command line, 3 the bus (the
  * message says what: no bus, permission, no device answering).
@@ -14,119 +16,133 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
-#include "demo_scene.h"
+#include "zs_app.h"
 #include "zs_linux_i2c.h"
-#include "zspan/panel.h"
+#include "zs_opts.h"
 
-static double now_s(void)
+static const char *prog = "zspan-i2c";
+
+typedef struct i2c_cfg {
+    const char *bus;
+    long addr;
+} i2c_cfg;
+
+/* What the report needs: the port, and the bus traffic of the frames alone. */
+typedef struct i2c_run {
+    zs_i2c_port port;
+    const i2c_cfg *cfg;
+    const char *panel;
+    uint64_t bytes0;
+    uint32_t messages0;
+    long frames;
+} i2c_run;
+
+static void usage(FILE *f)
 {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + (double)ts.tv_nsec / 1e9;
+    fprintf(f,
+            "usage: %s [options]\n"
+            "Renders the zspan demo in 1 bit on an SSD1306 / SH1106 module on a Linux I2C bus\n"
+            "(i2c-dev; built without mesh loading, so no --mesh).\n\n"
+            "Wiring:\n"
+            "  --bus /dev/i2c-N      I2C bus (default /dev/i2c-1)\n"
+            "  --addr 0xNN           the module's address (default 0x3C)\n\n"
+            "%s\n"
+            "Here the panel defaults to ssd1306-128x64 (also ssd1306-128x32, sh1106-132x64),\n"
+            "--frames to 30 and --rotation takes 0 or 2.\n"
+            "Exit status: 0 ok, 1 error, 2 usage, 3 the bus (no bus, permission, no device).\n",
+            prog, ZS_APP_USAGE);
 }
 
-static int usage(void)
+static void defaults(zs_app_opts *o)
 {
-    fprintf(stderr, "usage: zspan-i2c [--bus /dev/i2c-1] [--addr 0x3C] [--panel NAME] "
-                    "[--frames N] [--rotation 0|2] [--diffuse] [--lines] [--quiet]\n"
-                    "panels: ssd1306-128x64, ssd1306-128x32, sh1106-132x64\n");
-    return 2;
+    o->panel = "ssd1306-128x64";
+    o->frames = 30;
+}
+
+static int port_option(void *cfg, int argc, char **argv, int *i)
+{
+    i2c_cfg *c = cfg;
+    int m;
+    if ((m = zs_opt_value(argc, argv, i, "--bus", &c->bus, prog)) != 0)
+        return m;
+    return zs_opt_long_at(argc, argv, i, "--addr", 0x03, 0x77, &c->addr, prog);
+}
+
+static const char *port_error(void *ctx)
+{
+    return zs_i2c_error(&((i2c_run *)ctx)->port);
+}
+
+static int port_ready(void *ctx, const zs_panel *lcd, const zs_wire_model *wire)
+{
+    i2c_run *run = ctx;
+    (void)lcd;
+    (void)wire;
+    run->bytes0 = run->port.bytes;
+    run->messages0 = run->port.messages;
+    return 0;
+}
+
+static int port_frame_done(void *ctx, const zs_app_frame *f)
+{
+    ((i2c_run *)ctx)->frames = f->index + 1;
+    return 0;
+}
+
+static void port_report(void *ctx, FILE *f)
+{
+    const i2c_run *run = ctx;
+    uint64_t bytes = run->port.bytes - run->bytes0;
+    uint32_t msgs = run->port.messages - run->messages0;
+    double n = run->frames > 0 ? (double)run->frames : 1.0;
+    fprintf(f,
+            "%s: %s on %s at 0x%02lX, %ld frames; wire %.0f bytes a frame: %.2f ms at 400 kHz, "
+            "%.2f ms at 1 MHz\n",
+            prog, run->panel, run->cfg->bus, run->cfg->addr, run->frames, (double)bytes / n,
+            zs_i2c_wire_us(bytes, msgs, 400e3) / 1e3 / n, zs_i2c_wire_us(bytes, msgs, 1e6) / 1e3 / n);
 }
 
 int main(int argc, char **argv)
 {
-    const char *bus = "/dev/i2c-1", *name = "ssd1306-128x64";
-    long addr = 0x3C, frames = 30, rot = 0;
-    int diffuse = 0, lines = 0, quiet = 0, i;
-    for (i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        char *end = NULL;
-        if (strcmp(a, "--diffuse") == 0) diffuse = 1;
-        else if (strcmp(a, "--lines") == 0) lines = 1;
-        else if (strcmp(a, "--quiet") == 0) quiet = 1;
-        else if (v && strcmp(a, "--bus") == 0) bus = argv[++i];
-        else if (v && strcmp(a, "--panel") == 0) name = argv[++i];
-        else if (v && strcmp(a, "--addr") == 0) {
-            addr = strtol(argv[++i], &end, 0);
-            if (*end || addr < 0x03 || addr > 0x77) return usage();
-        } else if (v && strcmp(a, "--frames") == 0) {
-            frames = strtol(argv[++i], &end, 10);
-            if (*end || frames < 1 || frames > 1000000) return usage();
-        } else if (v && strcmp(a, "--rotation") == 0) {
-            rot = strtol(argv[++i], &end, 10);
-            if (*end || (rot != 0 && rot != 2)) return usage();
-        } else
-            return usage();
-    }
-    const zs_panel_desc *d = zs_panel_find(name);
-    if (d == NULL || !zs_panel_supports(d, ZS_FMT_MONO_PAGE)) {
-        fprintf(stderr, "zspan-i2c: '%s' is no I2C OLED panel\n", name);
-        return usage();
-    }
-    zs_i2c_port port;
+    zs_app_opts o;
+    i2c_cfg c = {"/dev/i2c-1", 0x3C};
+    zs_app_cli cli = {NULL, usage, port_option, NULL, defaults};
+    static i2c_run run;
+    zs_app_port ap;
+    const zs_panel_desc *d;
     char err[256];
-    if (zs_i2c_open(&port, bus, (uint8_t)addr, err, sizeof err) != 0) {
-        fprintf(stderr, "zspan-i2c: %s\n", err);
+    int rc;
+
+    cli.prog = prog;
+    cli.cfg = &c;
+    if ((rc = zs_app_parse(&o, argc, argv, &cli)) != ZS_APP_PARSED)
+        return rc;
+    d = zs_panel_find(o.panel);
+    if (!zs_panel_supports(d, ZS_FMT_MONO_PAGE) || o.rotation % 2 != 0) {
+        fprintf(stderr, "%s: %s\n", prog,
+                o.rotation % 2 ? "--rotation: 0 or 2 on these modules"
+                               : "--panel: not an I2C OLED module (ssd1306-*, sh1106-*)");
+        zs_app_free(&o);
+        return 2;
+    }
+    if (zs_i2c_open(&run.port, c.bus, (uint8_t)c.addr, err, sizeof err) != 0) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        zs_app_free(&o);
         return 3;
     }
-    zs_panel lcd;
-    zs_panel_status ps = zs_panel_init(&lcd, d, &port.bus, ZS_FMT_MONO_PAGE, (unsigned)rot);
-    if (ps != ZS_PANEL_OK) {
-        fprintf(stderr, "zspan-i2c: panel init: %s%s%s\n", zs_panel_strerror(ps),
-                ps == ZS_PANEL_ERR_IO ? ": " : "", ps == ZS_PANEL_ERR_IO ? zs_i2c_error(&port) : "");
-        zs_i2c_close(&port);
-        return ps == ZS_PANEL_ERR_IO ? 3 : 1;
-    }
-    static demo_scene scene;
-    demo_scene_init(&scene);
-    zs_config cfg = zs_config_default(lcd.width, lcd.height, DEMO_TRIANGLES * 2, DEMO_VERTICES * 2,
-                                      1024);
-    cfg.flags = ZS_CFG_MONO | ZS_CFG_LINES;
-    size_t n = zs_arena_bytes(&cfg);
-    void *arena = malloc(n);
-    static uint8_t buf[2][132 * 2];
-    zs_renderer r;
-    if (arena == NULL || zs_init(&r, arena, n, &cfg) != ZS_OK) {
-        fprintf(stderr, "zspan-i2c: no memory for the renderer\n");
-        return 1;
-    }
-    double t_all = 0;
-    uint64_t bytes_all = 0;
-    uint32_t msgs_all = 0;
-    for (long k = 0; k < frames; k++) {
-        zs_camera cam;
-        zs_shade_params sp;
-        double t0 = now_s();
-        uint64_t b0 = port.bytes;
-        uint32_t m0 = port.messages;
-        demo_camera(&cam, (uint32_t)k);
-        zs_frame_begin(&r, &cam, ZS_MODE_SPAN);
-        sp = demo_shading(ZS_SHADE_GOURAUD, ZS_FMT_MONO_PAGE);
-        sp.mono = (uint8_t)(lines ? ZS_MONO_LINES : diffuse ? ZS_MONO_DIFFUSE : 0);
-        zs_frame_shading(&r, &sp);
-        demo_scene_draw(&r, &scene);
-        ps = zs_panel_stream(&lcd, &r, buf[0], buf[1], sizeof buf[0], 16, NULL, NULL);
-        if (ps != ZS_PANEL_OK) {
-            fprintf(stderr, "zspan-i2c: frame %ld: %s%s%s\n", k, zs_panel_strerror(ps),
-                    ps == ZS_PANEL_ERR_IO ? ": " : "", ps == ZS_PANEL_ERR_IO ? zs_i2c_error(&port) : "");
-            zs_i2c_close(&port);
-            free(arena);
-            return ps == ZS_PANEL_ERR_IO ? 3 : 1;
-        }
-        t_all += now_s() - t0;
-        bytes_all += port.bytes - b0;
-        msgs_all += port.messages - m0;
-    }
-    if (!quiet)
-        printf("zspan-i2c: %s on %s at 0x%02lX, %ld frames, %.1f ms a frame (rendering and the "
-               "bus); wire %.0f bytes a frame: %.2f ms at 400 kHz, %.2f ms at 1 MHz\n",
-               d->name, bus, addr, frames, t_all * 1e3 / (double)frames,
-               (double)bytes_all / (double)frames,
-               zs_i2c_wire_us(bytes_all, msgs_all, 400e3) / 1e3 / (double)frames,
-               zs_i2c_wire_us(bytes_all, msgs_all, 1e6) / 1e3 / (double)frames);
-    zs_i2c_close(&port);
-    free(arena);
-    return 0;
+    run.cfg = &c;
+    run.panel = d->name;
+    memset(&ap, 0, sizeof ap);
+    ap.name = "I2C";
+    ap.clock_hz = 400000;
+    ap.error = port_error;
+    ap.ready = port_ready;
+    ap.frame_done = port_frame_done;
+    ap.report = port_report;
+    ap.ctx = &run;
+    rc = zs_app_run(&o, &run.port.bus, &ap, prog);
+    zs_i2c_close(&run.port);
+    zs_app_free(&o);
+    return rc;
 }

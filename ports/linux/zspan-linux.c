@@ -95,7 +95,7 @@ int main(int argc, char **argv)
 {
     zs_app_opts o;
     zs_linux_cfg c = zs_linux_cfg_default();
-    zs_app_cli cli = {NULL, usage, port_option, NULL};
+    zs_app_cli cli = {NULL, usage, port_option, NULL, NULL};
     zs_linux_port port;
     zs_app_port ap;
     char err[512];

@@ -86,7 +86,7 @@ int main(int argc, char **argv)
 {
     zs_app_opts o;
     mcp_args args;
-    zs_app_cli cli = {NULL, usage, port_option, NULL};
+    zs_app_cli cli = {NULL, usage, port_option, NULL, NULL};
     zs_mcp2210 m;
     zs_app_port ap;
     char err[512];

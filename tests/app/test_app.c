@@ -141,6 +141,7 @@ static int parse(int argc, char **argv, zs_app_opts *o, long *dc)
     cli.usage = fake_usage;
     cli.option = fake_option;
     cli.cfg = dc;
+    cli.defaults = NULL;
     return zs_app_parse(o, argc, argv, &cli);
 }
 
@@ -169,6 +170,19 @@ static void test_command_line(void **state)
     assert_int_equal(parse(3, bad_port, &o, &dc), 2);
     assert_int_equal(parse(2, unknown, &o, &dc), 2);
     assert_int_equal(parse(2, list, &o, &dc), 0);
+    /* the 1-bit options: a 1-bit panel's wire format is 1-bit pages, and
+     * what needs the other kind is refused before any device is opened */
+    {
+        char *mono[] = {"p", "--panel", "ssd1306-128x64", "--lines"};
+        char *mono_colour[] = {"p", "--panel", "ili9341", "--diffuse"};
+        char *mono_partial[] = {"p", "--panel", "sh1106-132x64", "--partial"};
+        assert_int_equal(parse(4, mono, &o, &dc), ZS_APP_PARSED);
+        assert_int_equal(o.mono, ZS_MONO_LINES);
+        assert_int_equal(zs_app_wire_format(&o, zs_panel_find(o.panel)), ZS_FMT_MONO_PAGE);
+        zs_app_free(&o);
+        assert_int_equal(parse(4, mono_colour, &o, &dc), 2);
+        assert_int_equal(parse(4, mono_partial, &o, &dc), 2);
+    }
 }
 
 /* ---- the demo scene's frames ------------------------------------------------------ */

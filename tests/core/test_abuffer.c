@@ -35,19 +35,16 @@
 #define TOL (1.0 / 1048576.0)
 #define SEED 0xAB0FFE7000000017ull
 
-static void ctx_init_aa(zt_ctx *c, int w, int h, int max_tris, int max_verts, int max_edges,
-                        uint16_t flags)
+/* What the scene tests start from: the random stream of seed, a renderer
+ * with the suite's pools and flags, the standard camera and an empty scene
+ * of unit_div position units per world unit. */
+static void scene_setup(zt_rng *g, uint64_t seed, zt_ctx *c, uint16_t flags, zs_camera *cam,
+                        zt_scene *sc, int unit_div)
 {
-    memset(c, 0, sizeof *c);
-    c->cfg = zs_config_default((uint16_t)w, (uint16_t)h, (uint16_t)max_tris, (uint16_t)max_verts,
-                               (uint16_t)max_edges);
-    c->cfg.flags = flags;
-    c->arena_size = zs_arena_bytes(&c->cfg);
-    if (c->arena_size == 0)
-        abort();
-    c->arena = malloc(c->arena_size);
-    if (!c->arena || zs_init(&c->r, c->arena, c->arena_size, &c->cfg) != ZS_OK)
-        abort();
+    zt_rng_seed(g, seed);
+    zt_ctx_init_flags(c, W, H, 800, 2400, 600, flags);
+    zt_camera_std(cam, ZS_FX(1) / 2, ZS_FX(100));
+    zt_scene_init(sc, W, H, unit_div);
 }
 
 /* ---------------- the reference ---------------- */
@@ -346,13 +343,10 @@ static void test_random_flat(void **state)
 {
     (void)state;
     zt_rng g;
-    zt_rng_seed(&g, SEED);
     zt_ctx c;
-    ctx_init_aa(&c, W, H, 800, 2400, 600, ZS_CFG_ABUFFER);
     zs_camera cam;
-    zt_camera_std(&cam, ZS_FX(1) / 2, ZS_FX(100));
     zt_scene sc;
-    zt_scene_init(&sc, W, H, 128);
+    scene_setup(&g, SEED, &c, ZS_CFG_ABUFFER, &cam, &sc, 128);
     aa_stats as;
     memset(&as, 0, sizeof as);
     for (int n = 0; n < NSCENES; n++) {
@@ -373,13 +367,10 @@ static void test_random_gouraud(void **state)
 {
     (void)state;
     zt_rng g;
-    zt_rng_seed(&g, SEED + 1);
     zt_ctx c;
-    ctx_init_aa(&c, W, H, 800, 2400, 600, ZS_CFG_ABUFFER);
     zs_camera cam;
-    zt_camera_std(&cam, ZS_FX(1) / 2, ZS_FX(100));
     zt_scene sc;
-    zt_scene_init(&sc, W, H, 128);
+    scene_setup(&g, SEED + 1, &c, ZS_CFG_ABUFFER, &cam, &sc, 128);
     aa_stats as;
     memset(&as, 0, sizeof as);
     for (int n = 0; n < NSCENES / 2; n++) {
@@ -402,13 +393,10 @@ static void test_random_transparent(void **state)
 {
     (void)state;
     zt_rng g;
-    zt_rng_seed(&g, SEED + 4);
     zt_ctx c;
-    ctx_init_aa(&c, W, H, 800, 2400, 600, ZS_CFG_ABUFFER);
     zs_camera cam;
-    zt_camera_std(&cam, ZS_FX(1) / 2, ZS_FX(100));
     zt_scene sc;
-    zt_scene_init(&sc, W, H, 128);
+    scene_setup(&g, SEED + 4, &c, ZS_CFG_ABUFFER, &cam, &sc, 128);
     aa_stats as[2];
     memset(as, 0, sizeof as);
     for (int n = 0; n < NSCENES / 2; n++) {
@@ -437,13 +425,10 @@ static void test_tiling_no_seams(void **state)
 {
     (void)state;
     zt_rng g;
-    zt_rng_seed(&g, SEED + 2);
     zt_ctx c;
-    ctx_init_aa(&c, W, H, 800, 2400, 600, ZS_CFG_ABUFFER);
     zs_camera cam;
-    zt_camera_std(&cam, ZS_FX(1) / 2, ZS_FX(100));
     zt_scene sc;
-    zt_scene_init(&sc, W, H, 8 * H);
+    scene_setup(&g, SEED + 2, &c, ZS_CFG_ABUFFER, &cam, &sc, 8 * H);
     static uint8_t img[W * H * 3];
     unsigned long bad = 0, resolved = 0, meshes = 0;
     const zs_color col = ZS_RGB(200, 120, 40);
@@ -561,7 +546,7 @@ static void test_formats_and_off(void **state)
     zt_rng_seed(&g, SEED + 3);
     zt_ctx plain, aa;
     zt_ctx_init(&plain, W, H, 800, 2400, 600);
-    ctx_init_aa(&aa, W, H, 800, 2400, 600, ZS_CFG_ABUFFER | ZS_CFG_MONO);
+    zt_ctx_init_flags(&aa, W, H, 800, 2400, 600, ZS_CFG_ABUFFER | ZS_CFG_MONO);
     zs_camera cam;
     zt_camera_std(&cam, ZS_FX(1) / 2, ZS_FX(100));
     zt_scene sc;
@@ -666,7 +651,7 @@ static void test_api(void **state)
     (void)state;
     zt_ctx plain, aa;
     zt_ctx_init(&plain, 16, 16, 10, 30, 10);
-    ctx_init_aa(&aa, 16, 16, 40, 120, 10, ZS_CFG_ABUFFER);
+    zt_ctx_init_flags(&aa, 16, 16, 40, 120, 10, ZS_CFG_ABUFFER);
     zs_camera cam;
     zt_camera_std(&cam, ZS_FX(1) / 2, ZS_FX(100));
     ZT_ST(zs_frame_antialias(NULL, ZS_AA_EDGES), ZS_ERR_NULL);

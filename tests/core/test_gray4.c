@@ -26,35 +26,8 @@
 
 static unsigned long g_frames, g_bytes;
 
-typedef struct ctx {
-    zs_renderer r;
-    zs_config cfg;
-    uint8_t *arena;
-} ctx;
-
-static void ctx_init(ctx *c, int w, int h, uint16_t flags)
-{
-    memset(c, 0, sizeof *c);
-    c->cfg = zs_config_default((uint16_t)w, (uint16_t)h, 400, 1200, 400);
-    c->cfg.flags = flags;
-    size_t n = zs_arena_bytes(&c->cfg);
-    assert_true(n > 0);
-    c->arena = malloc(n);
-    assert_non_null(c->arena);
-    ZT_ST(zs_init(&c->r, c->arena, n, &c->cfg), ZS_OK);
-}
-
-static void ctx_free(ctx *c) { free(c->arena); }
-
-static zs_status begin(ctx *c, const zs_camera *cam, zs_visibility mode,
-                       const zs_shade_params *sp, const zs_mesh *m)
-{
-    zs_status st = zs_frame_begin(&c->r, cam, mode);
-    if (st != ZS_OK) return st;
-    st = zs_frame_shading(&c->r, sp);
-    if (st != ZS_OK) return st;
-    return m ? zs_draw(&c->r, m, NULL) : ZS_OK;
-}
+/* The suite's pools (zt_ctx_init_flags). */
+#define POOLS 400, 1200, 400
 
 /* The recursive 8x8 Bayer matrix, from its bit construction (not the
  * core's table): bit-reversed interleave of (x ^ y) and y. */
@@ -96,7 +69,7 @@ static void oracle_pack(const uint8_t *grey, int w, int h, int dither, int inver
 /* Bands of `band` rows with stride `stride` through zs_render_rows into a
  * scratch band, copied into img (h rows of (w + 1) / 2). Checks that the
  * bytes past each row's end (up to the stride) are left alone. */
-static zs_status render_rows_gray4(ctx *c, uint8_t *img, int band, size_t stride)
+static zs_status render_rows_gray4(zt_ctx *c, uint8_t *img, int band, size_t stride)
 {
     int w = c->cfg.width, h = c->cfg.height;
     size_t s = (size_t)(w + 1) / 2;
@@ -132,7 +105,7 @@ static int copy_band(void *user, int y0, int rows, const void *buf, size_t strid
     return 0;
 }
 
-static zs_status render_frame_gray4(ctx *c, uint8_t *img, int band)
+static zs_status render_frame_gray4(zt_ctx *c, uint8_t *img, int band)
 {
     size_t stride = (size_t)(c->cfg.width + 1) / 2 + 2;
     uint8_t *buf = malloc(stride * (size_t)band);
@@ -149,22 +122,16 @@ static void random_look(zt_rng *g, int k, zs_shade_params *sp)
     *sp = zs_shade_default();
     sp->shading = (k & 1) ? ZS_SHADE_GOURAUD : ZS_SHADE_FLAT;
     sp->background = zt_u32(g) & 0xFFFFFFu;
-    if (k & 2) {
-        sp->ambient = (zs_fixed)zt_range(g, 0, ZS_FX(1) / 2);
-        sp->light_count = 1;
-        sp->lights[0].direction = zs_vec3_make((zs_fixed)zt_range(g, -ZS_FX(2), ZS_FX(2)),
-                                               (zs_fixed)zt_range(g, -ZS_FX(2), ZS_FX(2)),
-                                               ZS_FX(1));
-        sp->lights[0].intensity = (zs_fixed)zt_range(g, ZS_FX(1) / 2, ZS_FX(3) / 2);
-    }
+    if (k & 2)
+        zt_random_light(g, sp, ZS_FX(1) / 2);
 }
 
 static void against_oracle(int w, int h, int scenes, uint64_t seed)
 {
     zt_rng g;
     zt_rng_seed(&g, seed);
-    ctx c;
-    ctx_init(&c, w, h, ZS_CFG_MONO);
+    zt_ctx c;
+    zt_ctx_init_flags(&c, w, h, POOLS, ZS_CFG_MONO);
     zs_camera cam;
     zt_camera_std(&cam, ZS_FX(1) / 2, ZS_FX(60));
     zt_scene sc;
@@ -180,7 +147,7 @@ static void against_oracle(int w, int h, int scenes, uint64_t seed)
         zs_shade_params sp;
         random_look(&g, k, &sp);
         sp.format = ZS_FMT_GRAY8;
-        ZT_ST(begin(&c, &cam, ZS_MODE_ZLINE, &sp, &m), ZS_OK);
+        ZT_ST(zt_begin(&c, &cam, ZS_MODE_ZLINE, &sp, &m), ZS_OK);
         ZT_ST(zs_render_rows(&c.r, 0, h, grey, (size_t)w), ZS_OK);
         for (int v = 0; v < 4; v++) {
             int dither = v & 1, invert = (v >> 1) & 1;
@@ -194,7 +161,7 @@ static void against_oracle(int w, int h, int scenes, uint64_t seed)
                     int via_frame = (b + mode + k) % 3 == 0;
                     if (band > h) band = h;
                     memset(img, 0xC3, n);
-                    ZT_ST(begin(&c, &cam, (zs_visibility)mode, &gp, &m), ZS_OK);
+                    ZT_ST(zt_begin(&c, &cam, (zs_visibility)mode, &gp, &m), ZS_OK);
                     if (via_frame)
                         ZT_ST(render_frame_gray4(&c, img, band), ZS_OK);
                     else
@@ -214,7 +181,7 @@ static void against_oracle(int w, int h, int scenes, uint64_t seed)
     }
     free(grey); free(want); free(img);
     zt_scene_free(&sc);
-    ctx_free(&c);
+    zt_ctx_free(&c);
 }
 
 static void test_against_grey_oracle(void **state)
@@ -227,21 +194,15 @@ static void test_against_grey_oracle(void **state)
 
 /* One screen-filling unlit quad of grey v; the mean level and whether every
  * pixel is the nearest level. */
-static double mean_level(ctx *c, const zs_camera *cam, int v, unsigned mono, int *all_nearest)
+static double mean_level(zt_ctx *c, const zs_camera *cam, int v, unsigned mono, int *all_nearest)
 {
     int w = c->cfg.width, h = c->cfg.height;
     zt_scene sc;
-    zt_scene_init(&sc, w, h, 128);
-    zs_color col = ZS_RGB(v, v, v);
-    int a = zt_scene_vertex_px(&sc, -2, -2, 2.0, col), b = zt_scene_vertex_px(&sc, w + 2, -2, 2.0, col);
-    int cc = zt_scene_vertex_px(&sc, w + 2, h + 2, 2.0, col), d = zt_scene_vertex_px(&sc, -2, h + 2, 2.0, col);
-    zt_scene_tri_front(&sc, a, b, cc, col);
-    zt_scene_tri_front(&sc, a, cc, d, col);
-    zs_mesh m = zt_scene_mesh(&sc, 1, 0);
+    zs_mesh m = zt_scene_grey_quad(&sc, w, h, v);
     zs_shade_params sp = zs_shade_default();
     sp.format = ZS_FMT_GRAY4;
     sp.mono = (uint8_t)mono;
-    ZT_ST(begin(c, cam, ZS_MODE_SPAN, &sp, &m), ZS_OK);
+    ZT_ST(zt_begin(c, cam, ZS_MODE_SPAN, &sp, &m), ZS_OK);
     size_t s = (size_t)(w + 1) / 2;
     uint8_t *img = calloc(s * (size_t)h, 1);
     ZT_ST(render_rows_gray4(c, img, 8, s), ZS_OK);
@@ -263,8 +224,8 @@ static double mean_level(ctx *c, const zs_camera *cam, int v, unsigned mono, int
 static void test_grey_levels(void **state)
 {
     (void)state;
-    ctx c;
-    ctx_init(&c, 128, 64, ZS_CFG_MONO);
+    zt_ctx c;
+    zt_ctx_init_flags(&c, 128, 64, POOLS, ZS_CFG_MONO);
     zs_camera cam;
     zt_camera_std(&cam, ZS_FX(1) / 2, ZS_FX(60));
     double worst = 0;
@@ -280,15 +241,15 @@ static void test_grey_levels(void **state)
     }
     print_message("GRAY4 flat greys 0..255: worst |mean level - 15 g / 255| dithered %.4f\n",
                   worst);
-    ctx_free(&c);
+    zt_ctx_free(&c);
 }
 
 static void test_api(void **state)
 {
     (void)state;
-    ctx plain, mono;
-    ctx_init(&plain, 31, 9, 0);
-    ctx_init(&mono, 31, 9, ZS_CFG_MONO);
+    zt_ctx plain, mono;
+    zt_ctx_init_flags(&plain, 31, 9, POOLS, 0);
+    zt_ctx_init_flags(&mono, 31, 9, POOLS, ZS_CFG_MONO);
     zs_camera cam;
     zt_camera_std(&cam, ZS_FX(1) / 2, ZS_FX(60));
     zs_shade_params sp = zs_shade_default();
@@ -297,8 +258,8 @@ static void test_api(void **state)
     ZT_CHECK(zs_format_stride(ZS_FMT_GRAY4, 128) == 64, "even stride");
     ZT_CHECK(zs_format_bytes(ZS_FMT_GRAY4) == 0 && !zs_format_is_mono(ZS_FMT_GRAY4),
              "not a byte format, not a 1-bit one");
-    ZT_ST(begin(&plain, &cam, ZS_MODE_SPAN, &sp, NULL), ZS_ERR_MODE);
-    ZT_ST(begin(&mono, &cam, ZS_MODE_SPAN, &sp, NULL), ZS_OK);
+    ZT_ST(zt_begin(&plain, &cam, ZS_MODE_SPAN, &sp, NULL), ZS_ERR_MODE);
+    ZT_ST(zt_begin(&mono, &cam, ZS_MODE_SPAN, &sp, NULL), ZS_OK);
     ZT_CHECK(zs_frame_format(&mono.r) == ZS_FMT_GRAY4, "the frame's format");
     ZT_CHECK(mono.r.shade.format == ZS_FMT_GRAY8, "the scratch format");
     uint8_t buf[4 * 20];
@@ -307,15 +268,15 @@ static void test_api(void **state)
     for (unsigned bit = 1; bit < 256; bit <<= 1) {
         sp.mono = (uint8_t)bit;
         int ok = bit == ZS_GRAY4_DITHER || bit == ZS_MONO_INVERT;
-        ZT_ST(begin(&mono, &cam, ZS_MODE_SPAN, &sp, NULL), ok ? ZS_OK : ZS_ERR_ARGUMENT);
+        ZT_ST(zt_begin(&mono, &cam, ZS_MODE_SPAN, &sp, NULL), ok ? ZS_OK : ZS_ERR_ARGUMENT);
     }
     /* a refused call keeps the previous frame's format */
     sp.mono = ZS_MONO_DIFFUSE;
     ZT_ST(zs_frame_begin(&mono.r, &cam, ZS_MODE_SPAN), ZS_OK);
     ZT_ST(zs_frame_shading(&mono.r, &sp), ZS_ERR_ARGUMENT);
     ZT_CHECK(zs_frame_format(&mono.r) == ZS_FMT_RGB565_BE, "refused: the default stays");
-    ctx_free(&plain);
-    ctx_free(&mono);
+    zt_ctx_free(&plain);
+    zt_ctx_free(&mono);
 }
 
 int main(void)

@@ -30,35 +30,11 @@
 
 static unsigned long g_frames, g_bytes;
 
-typedef struct ctx {
-    zs_renderer r;
-    zs_config cfg;
-    uint8_t *arena;
-} ctx;
-
-static void ctx_init(ctx *c, int w, int h, uint16_t flags)
-{
-    memset(c, 0, sizeof *c);
-    c->cfg = zs_config_default((uint16_t)w, (uint16_t)h, 400, 1200, 400);
-    c->cfg.flags = flags;
-    size_t n = zs_arena_bytes(&c->cfg);
-    assert_true(n > 0);
-    c->arena = malloc(n);
-    assert_non_null(c->arena);
-    ZT_ST(zs_init(&c->r, c->arena, n, &c->cfg), ZS_OK);
-}
-
-static void ctx_free(ctx *c) { free(c->arena); }
-
-static zs_status begin(ctx *c, const zs_camera *cam, zs_visibility mode,
-                       const zs_shade_params *sp, const zs_mesh *m)
-{
-    zs_status st = zs_frame_begin(&c->r, cam, mode);
-    if (st != ZS_OK) return st;
-    st = zs_frame_shading(&c->r, sp);
-    if (st != ZS_OK) return st;
-    return m ? zs_draw(&c->r, m, NULL) : ZS_OK;
-}
+/* The renderers: zt_ctx (zt.h) with this suite's pools. */
+typedef zt_ctx ctx;
+#define ctx_init(c, w, h, flags) zt_ctx_init_flags(c, w, h, 400, 1200, 400, flags)
+#define ctx_free zt_ctx_free
+#define begin zt_begin
 
 /* The whole frame in a 1-bit format, bands of `band` rows through
  * zs_render_rows (page layout: into the frame's page buffer at the band's
@@ -187,14 +163,8 @@ static void random_look(zt_rng *g, int k, zs_shade_params *sp)
     *sp = zs_shade_default();
     sp->shading = (k & 1) ? ZS_SHADE_GOURAUD : ZS_SHADE_FLAT;
     sp->background = zt_u32(g) & 0xFFFFFFu;
-    if (k & 2) {
-        sp->ambient = (zs_fixed)zt_range(g, 0, ZS_FX(1) / 2);
-        sp->light_count = 1;
-        sp->lights[0].direction = zs_vec3_make((zs_fixed)zt_range(g, -ZS_FX(2), ZS_FX(2)),
-                                               (zs_fixed)zt_range(g, -ZS_FX(2), ZS_FX(2)),
-                                               ZS_FX(1));
-        sp->lights[0].intensity = (zs_fixed)zt_range(g, ZS_FX(1) / 2, ZS_FX(3) / 2);
-    }
+    if (k & 2)
+        zt_random_light(g, sp, ZS_FX(1) / 2);
 }
 
 static void test_against_grey_oracle(void **state)
@@ -263,13 +233,7 @@ static double lit_fraction(ctx *c, const zs_camera *cam, int v, unsigned mono, z
 {
     int w = c->cfg.width, h = c->cfg.height;
     zt_scene sc;
-    zt_scene_init(&sc, w, h, 128);
-    zs_color col = ZS_RGB(v, v, v);
-    int a = zt_scene_vertex_px(&sc, -2, -2, 2.0, col), b = zt_scene_vertex_px(&sc, w + 2, -2, 2.0, col);
-    int cc = zt_scene_vertex_px(&sc, w + 2, h + 2, 2.0, col), d = zt_scene_vertex_px(&sc, -2, h + 2, 2.0, col);
-    zt_scene_tri_front(&sc, a, b, cc, col);
-    zt_scene_tri_front(&sc, a, cc, d, col);
-    zs_mesh m = zt_scene_mesh(&sc, 1, 0);
+    zs_mesh m = zt_scene_grey_quad(&sc, w, h, v);
     zs_shade_params sp = zs_shade_default();
     sp.format = fmt;
     sp.mono = (uint8_t)mono;

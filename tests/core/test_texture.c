@@ -92,15 +92,14 @@ static uint32_t texel_rgb(const zs_texture *t, int i, int j)
 
 /* ---------------- renderer ---------------- */
 
-static void ctx_init(zt_ctx *c, uint16_t flags)
+static void ctx_init(zt_ctx *c, uint16_t flags) { zt_ctx_init_flags(c, W, H, 600, 1800, 512, flags); }
+
+/* ntri random triangles of the kinds given (zt_scene_random), 64 position
+ * units per world unit. */
+static void random_scene(zt_rng *g, zt_scene *s, int ntri, unsigned kinds)
 {
-    memset(c, 0, sizeof *c);
-    c->cfg = zs_config_default(W, H, 600, 1800, 512);
-    c->cfg.flags = flags;
-    c->arena_size = zs_arena_bytes(&c->cfg);
-    c->arena = malloc(c->arena_size);
-    assert_non_null(c->arena);
-    assert_int_equal(zs_init(&c->r, c->arena, c->arena_size, &c->cfg), ZS_OK);
+    zt_scene_init(s, W, H, 64);
+    zt_scene_random(g, s, ntri, kinds, 0.25);
 }
 
 static int16_t *random_uvs(zt_rng *g, size_t nv, int spread)
@@ -140,14 +139,8 @@ static void random_look(zt_rng *g, int k, zs_shade_params *sp)
     sp->shading = (k / 5) % 2 ? ZS_SHADE_GOURAUD : ZS_SHADE_FLAT;
     sp->background = zt_u32(g) & 0xFFFFFFu;
     int l = (k / 10) % 4;
-    if (l & 1) {
-        sp->ambient = (zs_fixed)zt_range(g, 0, ZS_FX(1) / 2);
-        sp->light_count = 1;
-        sp->lights[0].direction = zs_vec3_make((zs_fixed)zt_range(g, -ZS_FX(2), ZS_FX(2)),
-                                               (zs_fixed)zt_range(g, -ZS_FX(2), ZS_FX(2)),
-                                               ZS_FX(1));
-        sp->lights[0].intensity = (zs_fixed)zt_range(g, ZS_FX(1) / 4, ZS_FX(3) / 2);
-    }
+    if (l & 1)
+        zt_random_light(g, sp, ZS_FX(1) / 4);
     if (l & 2) {
         sp->fog.enabled = 1;
         sp->fog.color = zt_u32(g) & 0xFFFFFFu;
@@ -172,8 +165,7 @@ static void test_modes_identical(void **state)
     uint8_t *a = malloc(bytes), *b = malloc(bytes);
     for (int sc = 0; sc < 240; sc++) {
         zt_scene s;
-        zt_scene_init(&s, W, H, 64);
-        zt_scene_random(&g, &s, 6 + (int)zt_below(&g, 40), ZT_SC_ALL, 0.25);
+        random_scene(&g, &s, 6 + (int)zt_below(&g, 40), ZT_SC_ALL);
         zs_texture tex = tex_make(sc % 3, (unsigned)(sc / 3) % 8);
         int16_t *uv = random_uvs(&g, s.nv, 1 + (int)zt_below(&g, 12));
         zs_mesh m[2];
@@ -222,8 +214,7 @@ static void test_untextured_unchanged(void **state)
     uint8_t *a = malloc(bytes), *b = malloc(bytes);
     for (int sc = 0; sc < 60; sc++) {
         zt_scene s;
-        zt_scene_init(&s, W, H, 64);
-        zt_scene_random(&g, &s, 10 + (int)zt_below(&g, 30), ZT_SC_ALL, 0.25);
+        random_scene(&g, &s, 10 + (int)zt_below(&g, 30), ZT_SC_ALL);
         zs_mesh m = zt_scene_mesh(&s, sc % 2, (sc / 2) % 2);
         zs_shade_params sp;
         random_look(&g, sc, &sp);
@@ -289,9 +280,7 @@ typedef struct ref_scene {
 
 static void ref_scene_make(zt_rng *g, ref_scene *rs, int ntri, int spread)
 {
-    zt_scene_init(&rs->s, W, H, 64);
-    zt_scene_random(g, &rs->s, ntri, ZT_SC_PLAIN | ZT_SC_FLAT | ZT_SC_SHARED | ZT_SC_LAYERS,
-                    0.25);
+    random_scene(g, &rs->s, ntri, ZT_SC_PLAIN | ZT_SC_FLAT | ZT_SC_SHARED | ZT_SC_LAYERS);
     rs->uv = random_uvs(g, rs->s.nv, spread);
 }
 
@@ -328,6 +317,49 @@ static void ref_walk(const ref_scene *rs, const zt_recs *recs, const zs_texture 
     zt_cast_free(&cast);
 }
 
+/* The reference tests' frames: 120 random scenes from seed (4..19
+ * triangles, uv spread 2 .. spread + 1 quarter-textures), scene sc drawn
+ * white with the texture tex_of(sc) in RGB888, in zline mode where
+ * zline_every divides sc (0: never), else span mode; every pixel of a scene
+ * without clipping (records == the mesh's triangles) goes to fn, with *cur
+ * pointing at the scene's texture. */
+static void ref_scenes(uint64_t seed, int spread, int zline_every, zs_texture (*tex_of)(int sc),
+                       const zs_texture **cur, ref_fn fn, void *acc)
+{
+    zt_rng g;
+    zt_rng_seed(&g, seed);
+    make_textures(&g);
+    zt_ctx c;
+    ctx_init(&c, ZS_CFG_TEXTURE);
+    zs_camera cam;
+    zt_camera_std(&cam, NEAR_FX, FAR_FX);
+    uint8_t *img = malloc((size_t)W * H * 3);
+    for (int sc = 0; sc < 120; sc++) {
+        ref_scene rs;
+        ref_scene_make(&g, &rs, 4 + (int)zt_below(&g, 16), 2 + (int)zt_below(&g, (uint32_t)spread));
+        zs_texture tex = tex_of(sc);
+        zs_mesh m = zt_scene_mesh(&rs.s, 0, 0);
+        m.color = 0xFFFFFF;
+        m.uvs = rs.uv;
+        m.texture = &tex;
+        zs_shade_params sp = zs_shade_default();
+        sp.format = ZS_FMT_RGB888;
+        zt_recs recs = {0};
+        zs_visibility mode = zline_every && sc % zline_every == 0 ? ZS_MODE_ZLINE : ZS_MODE_SPAN;
+        assert_int_equal(render(&c, &cam, mode, &sp, &m, 1, img, H, &recs), ZS_OK);
+        *cur = &tex;
+        if (c.r.stats.tris_clipped == 0)
+            ref_walk(&rs, &recs, &tex, img, 3, fn, acc);
+        else
+            g_clipped++;
+        zt_recs_free(&recs);
+        free(rs.uv);
+        zt_scene_free(&rs.s);
+    }
+    free(img);
+    zt_ctx_free(&c);
+}
+
 typedef struct nearest_acc {
     const zs_texture *t;
     unsigned long px, exact, off1, worse;
@@ -361,42 +393,14 @@ static void nearest_check(void *user, int px, int py, double s, double t, const 
     }
 }
 
+static zs_texture nearest_tex(int sc) { return tex_make(0, (sc % 2) ? ZS_TEX_CLAMP : 0u); }
+
 static void test_nearest_exact(void **state)
 {
     (void)state;
-    zt_rng g;
-    zt_rng_seed(&g, 0x7E47E4003ull);
-    make_textures(&g);
-    zt_ctx c;
-    ctx_init(&c, ZS_CFG_TEXTURE);
-    zs_camera cam;
-    zt_camera_std(&cam, NEAR_FX, FAR_FX);
-    uint8_t *img = malloc((size_t)W * H * 3);
     nearest_acc acc;
     memset(&acc, 0, sizeof acc);
-    for (int sc = 0; sc < 120; sc++) {
-        ref_scene rs;
-        ref_scene_make(&g, &rs, 4 + (int)zt_below(&g, 16), 2 + (int)zt_below(&g, 16));
-        zs_texture tex = tex_make(0, (sc % 2) ? ZS_TEX_CLAMP : 0u);
-        zs_mesh m = zt_scene_mesh(&rs.s, 0, 0);
-        m.color = 0xFFFFFF;
-        m.uvs = rs.uv;
-        m.texture = &tex;
-        zs_shade_params sp = zs_shade_default();
-        sp.format = ZS_FMT_RGB888;
-        zt_recs recs = {0};
-        assert_int_equal(render(&c, &cam, sc % 3 ? ZS_MODE_SPAN : ZS_MODE_ZLINE, &sp, &m, 1, img,
-                                H, &recs),
-                         ZS_OK);
-        acc.t = &tex;
-        if (c.r.stats.tris_clipped == 0) /* records are the mesh's triangles */
-            ref_walk(&rs, &recs, &tex, img, 3, nearest_check, &acc);
-        else
-            g_clipped++;
-        zt_recs_free(&recs);
-        free(rs.uv);
-        zt_scene_free(&rs.s);
-    }
+    ref_scenes(0x7E47E4003ull, 16, 3, nearest_tex, &acc.t, nearest_check, &acc);
     fprintf(stderr, "nearest exact: %lu px, exact %lu (%.4f%%), off by one %lu, worse %lu\n",
             acc.px, acc.exact, 100.0 * (double)acc.exact / (double)acc.px, acc.off1, acc.worse);
     g_px += acc.px;
@@ -405,8 +409,6 @@ static void test_nearest_exact(void **state)
     assert_true(acc.px > 20000);
     assert_true((double)acc.exact >= 0.999 * (double)acc.px);
     assert_int_equal(acc.worse, 0);
-    free(img);
-    zt_ctx_free(&c);
 }
 
 /* ---------------- subdivided ---------------- */
@@ -453,40 +455,17 @@ static void sub_check(void *user, int px, int py, double s, double t, const uint
         a->max_err = e;
 }
 
+static zs_texture sub_tex(int sc)
+{
+    return tex_make(0, ZS_TEX_SUBDIV | ((sc % 2) ? ZS_TEX_CLAMP : 0u));
+}
+
 static void test_subdivided_bound(void **state)
 {
     (void)state;
-    zt_rng g;
-    zt_rng_seed(&g, 0x7E47E4004ull);
-    make_textures(&g);
-    zt_ctx c;
-    ctx_init(&c, ZS_CFG_TEXTURE);
-    zs_camera cam;
-    zt_camera_std(&cam, NEAR_FX, FAR_FX);
-    uint8_t *img = malloc((size_t)W * H * 3);
     sub_acc acc;
     memset(&acc, 0, sizeof acc);
-    for (int sc = 0; sc < 120; sc++) {
-        ref_scene rs;
-        ref_scene_make(&g, &rs, 4 + (int)zt_below(&g, 16), 2 + (int)zt_below(&g, 8));
-        zs_texture tex = tex_make(0, ZS_TEX_SUBDIV | ((sc % 2) ? ZS_TEX_CLAMP : 0u));
-        zs_mesh m = zt_scene_mesh(&rs.s, 0, 0);
-        m.color = 0xFFFFFF;
-        m.uvs = rs.uv;
-        m.texture = &tex;
-        zs_shade_params sp = zs_shade_default();
-        sp.format = ZS_FMT_RGB888;
-        zt_recs recs = {0};
-        assert_int_equal(render(&c, &cam, ZS_MODE_SPAN, &sp, &m, 1, img, H, &recs), ZS_OK);
-        acc.t = &tex;
-        if (c.r.stats.tris_clipped == 0)
-            ref_walk(&rs, &recs, &tex, img, 3, sub_check, &acc);
-        else
-            g_clipped++;
-        zt_recs_free(&recs);
-        free(rs.uv);
-        zt_scene_free(&rs.s);
-    }
+    ref_scenes(0x7E47E4004ull, 8, 0, sub_tex, &acc.t, sub_check, &acc);
     fprintf(stderr, "subdivided: %lu px, other texel than exact %lu (%.3f%%), max error %.3f texel\n",
             acc.px, acc.diff, 100.0 * (double)acc.diff / (double)acc.px, acc.max_err);
     g_sub_px += acc.px;
@@ -494,8 +473,6 @@ static void test_subdivided_bound(void **state)
         g_sub_max = acc.max_err;
     assert_true(acc.px > 20000);
     assert_true(acc.max_err <= SUBDIV_BOUND);
-    free(img);
-    zt_ctx_free(&c);
 }
 
 /* ---------------- bilinear ---------------- */
@@ -535,48 +512,18 @@ static void bil_check(void *user, int px, int py, double s, double t, const uint
     a->px++;
 }
 
+static zs_texture bil_tex(int sc) { return tex_make(1 + sc % 2, ZS_TEX_BILINEAR); }
+
 static void test_bilinear(void **state)
 {
     (void)state;
-    zt_rng g;
-    zt_rng_seed(&g, 0x7E47E4005ull);
-    make_textures(&g);
-    zt_ctx c;
-    ctx_init(&c, ZS_CFG_TEXTURE);
-    zs_camera cam;
-    zt_camera_std(&cam, NEAR_FX, FAR_FX);
-    uint8_t *img = malloc((size_t)W * H * 3);
     bil_acc acc;
     memset(&acc, 0, sizeof acc);
-    for (int sc = 0; sc < 120; sc++) {
-        ref_scene rs;
-        ref_scene_make(&g, &rs, 4 + (int)zt_below(&g, 16), 2 + (int)zt_below(&g, 12));
-        zs_texture tex = tex_make(1 + sc % 2, ZS_TEX_BILINEAR);
-        zs_mesh m = zt_scene_mesh(&rs.s, 0, 0);
-        m.color = 0xFFFFFF;
-        m.uvs = rs.uv;
-        m.texture = &tex;
-        zs_shade_params sp = zs_shade_default();
-        sp.format = ZS_FMT_RGB888;
-        zt_recs recs = {0};
-        assert_int_equal(render(&c, &cam, sc % 2 ? ZS_MODE_SPAN : ZS_MODE_ZLINE, &sp, &m, 1, img,
-                                H, &recs),
-                         ZS_OK);
-        acc.t = &tex;
-        if (c.r.stats.tris_clipped == 0)
-            ref_walk(&rs, &recs, &tex, img, 3, bil_check, &acc);
-        else
-            g_clipped++;
-        zt_recs_free(&recs);
-        free(rs.uv);
-        zt_scene_free(&rs.s);
-    }
+    ref_scenes(0x7E47E4005ull, 12, 2, bil_tex, &acc.t, bil_check, &acc);
     fprintf(stderr, "bilinear: %lu px, largest difference %d LSB\n", acc.px, acc.max_diff);
     g_bil_px += acc.px;
     assert_true(acc.px > 20000);
     assert_true(acc.max_diff <= 2);
-    free(img);
-    zt_ctx_free(&c);
 }
 
 /* ---------------- errors ---------------- */

@@ -2,9 +2,12 @@
 /*
  * Firmware test: frame 0 of the sphere285 benchmark scene, both visibility
  * modes, the three 1-bit outputs (ordered dither, error diffusion, hidden
- * lines) and GRAY4 rounded and dithered (bench_mono_frame), on the Cortex-M4 (QEMU mps2-an386) and Cortex-M0
- * (QEMU microbit, 16 KB RAM) images; the frame checksums must equal the
- * host's. Also checks
+ * lines) and GRAY4 rounded and dithered (bench_mono_frame), the textured
+ * scene (bench_tex_frame) and its geometry in Warnock mode and through the
+ * A-buffer (edges, transparency; bench_extra_frame), on the Cortex-M4 (QEMU
+ * mps2-an386) and Cortex-M0 (QEMU microbit, 16 KB RAM) images; the frame
+ * checksums must equal the host's, and the host's Warnock frame its span
+ * frame. Also checks
  * the SysTick calibration under -icount shift=0 and that no pool overflowed.
  * Takes well under a second per machine.
  */
@@ -63,14 +66,14 @@ static void run(output *o, const char *cmd)
 }
 
 /* Finds "R <board> <scene> <mode> 0 ... sum=XXXXXXXX" and returns the sum
- * (scene: sphere285, or textured for the tex-* outputs). */
-static int find_sum(const char *text, const char *board, const char *mode, unsigned long *sum,
-                    unsigned long *instr, unsigned long *dropped)
+ * (scene: sphere285, or textured from outputs[TEX_FIRST] on). */
+static int find_sum(const char *text, const char *board, const char *scene, const char *mode,
+                    unsigned long *sum, unsigned long *instr, unsigned long *dropped)
 {
     char prefix[96];
     const char *p;
     snprintf(prefix, sizeof prefix, "R %s %s %s 0 ", board,
-             strncmp(mode, "tex-", 4) ? "sphere285" : "textured", mode);
+             scene, mode);
     p = strstr(text, prefix);
     if (!p)
         return 0;
@@ -93,12 +96,16 @@ static int find_sum(const char *text, const char *board, const char *mode, unsig
 }
 
 /* span, zline, the 1-bit and GRAY4 outputs of bench_mono_frame, the
- * textured frames of bench_tex_frame */
-#define N_OUTPUTS 13
+ * textured frames of bench_tex_frame, the Warnock and A-buffer frames of
+ * bench_extra_frame (the textured scene's geometry) */
+#define N_OUTPUTS 16
 static const char *const outputs[N_OUTPUTS] = {
     "span", "zline", "mono-bayer", "mono-diffuse", "mono-lines", "gray4", "gray4-dither",
-    "tex-plain", "tex-nearest", "tex-nearest-zline", "tex-subdiv", "tex-bilinear", "tex-lit-fog"};
-#define TEX_FIRST 7 /* outputs[TEX_FIRST] is "tex-plain" */
+    "tex-plain", "tex-nearest", "tex-nearest-zline", "tex-subdiv", "tex-bilinear", "tex-lit-fog",
+    "warnock", "aa-edges", "aa-transparent"};
+#define TEX_FIRST 7    /* outputs[TEX_FIRST] is "tex-plain" */
+#define EXTRA_FIRST 13 /* outputs[EXTRA_FIRST] is "warnock" */
+#define SCENE_OF(m) ((m) < TEX_FIRST ? "sphere285" : "textured")
 static unsigned long host_sum[N_OUTPUTS];
 
 static int host_setup(void **state)
@@ -114,7 +121,8 @@ static int host_setup(void **state)
     {
         int m;
         for (m = 0; m < N_OUTPUTS; m++)
-            if (!find_sum(o.text, "host", outputs[m], &host_sum[m], &instr, &dropped)) {
+            if (!find_sum(o.text, "host", SCENE_OF(m), outputs[m], &host_sum[m], &instr,
+                          &dropped)) {
                 fprintf(stderr, "no host %s checksum in:\n%s\n", outputs[m], o.text);
                 return -1;
             }
@@ -124,6 +132,16 @@ static int host_setup(void **state)
         host_sum[TEX_FIRST] == host_sum[TEX_FIRST + 1]) {
         fprintf(stderr, "host textured checksums: plain %08lx nearest %08lx zline %08lx\n",
                 host_sum[TEX_FIRST], host_sum[TEX_FIRST + 1], host_sum[TEX_FIRST + 2]);
+        return -1;
+    }
+    /* Warnock mode: the span image byte for byte; anti-aliasing changes it */
+    if (host_sum[EXTRA_FIRST] != host_sum[TEX_FIRST] ||
+        host_sum[EXTRA_FIRST + 1] == host_sum[TEX_FIRST] ||
+        host_sum[EXTRA_FIRST + 2] == host_sum[EXTRA_FIRST + 1]) {
+        fprintf(stderr, "host checksums: tex-plain %08lx warnock %08lx aa-edges %08lx "
+                        "aa-transparent %08lx\n",
+                host_sum[TEX_FIRST], host_sum[EXTRA_FIRST], host_sum[EXTRA_FIRST + 1],
+                host_sum[EXTRA_FIRST + 2]);
         return -1;
     }
     return 0;
@@ -152,7 +170,7 @@ static void check_machine(const char *machine, const char *elf, const char *boar
     }
     for (m = 0; m < N_OUTPUTS; m++) {
         unsigned long sum, instr, dropped;
-        if (!find_sum(o.text, board, outputs[m], &sum, &instr, &dropped))
+        if (!find_sum(o.text, board, SCENE_OF(m), outputs[m], &sum, &instr, &dropped))
             fail_msg("%s: no %s result", machine, outputs[m]);
         if (sum != host_sum[m])
             fail_msg("%s %s: checksum %08lx, host %08lx", machine, outputs[m], sum, host_sum[m]);

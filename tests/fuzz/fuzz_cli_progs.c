@@ -60,7 +60,7 @@ int fuzz_linux_parse(int argc, char **argv)
 {
     zs_app_opts o;
     zs_linux_cfg c = zs_linux_cfg_default();
-    zs_app_cli cli = {NULL, usage, port_option, NULL};
+    zs_app_cli cli = {NULL, usage, port_option, NULL, NULL};
     int rc;
 
     cli.prog = prog;
@@ -85,7 +85,7 @@ int fuzz_mcp2210_parse(int argc, char **argv)
 {
     zs_app_opts o;
     mcp_args args;
-    zs_app_cli cli = {NULL, usage, port_option, NULL};
+    zs_app_cli cli = {NULL, usage, port_option, NULL, NULL};
     int rc;
 
     args.c = zs_mcp2210_cfg_default();

@@ -13,9 +13,12 @@
  * must return a status the header documents for that argument, and a
  * rejected call must change nothing.
  *
- * One input renders the scene three to four times: span mode and zline mode
+ * One input renders the scene four to seven times: span mode and zline mode
  * in the decoded format, span mode in ZS_FMT_ID16 (unless that is the
- * format), and the draws alone into a renderer with large pools. Invariants:
+ * format), Warnock mode, and the draws alone into a renderer with large
+ * pools; with ZS_CFG_ABUFFER (a quarter of the inputs) also span mode on a
+ * renderer without it and an anti-aliased frame (edges or transparency).
+ * Invariants:
  *   - status codes: each call's result is in the set the header allows for
  *     the arguments (computed here from the header's rules, not from src/);
  *   - memory: guard bytes around each band buffer and the stride padding
@@ -37,7 +40,14 @@
  *     the packed value the header defines for the format;
  *   - capacity policy: with a full triangle pool and no vertex drop, the
  *     records are exactly the first max_triangles records that large pools
- *     store (the last triangles submitted are the ones dropped).
+ *     store (the last triangles submitted are the ones dropped);
+ *   - Warnock mode == span mode byte for byte, with the same records (when
+ *     neither left records out of a full active pool);
+ *   - A-buffer: with anti-aliasing off, the same frame as a renderer
+ *     without ZS_CFG_ABUFFER; on, guards and padding intact, the statuses
+ *     the header gives (zs_frame_antialias needs the flag and span mode,
+ *     zs_draw_opacity a transparent frame), and rows no stored record comes
+ *     within a pixel of equal the aliased frame's.
  */
 #include <string.h>
 
@@ -100,6 +110,7 @@ typedef struct scene {
     fmesh mesh[MAXMESH];
     int band, start_row, use_frame_api, stop_after, pad;
     uint8_t misuse;
+    uint8_t aa; /* A-buffer frame: mode (bit 0: transparent), opacities */
 } scene;
 
 static const int32_t k_special[] = {
@@ -449,9 +460,7 @@ static int decode_scene(fz_reader *d, scene *s)
         unsigned allowed = 0;
 #ifdef ZS_CFG_NO_ZLINE
         c.flags = fz_u16(d);
-        if (c.flags & ~(unsigned)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES |
-                                  ZS_CFG_PRIORITY | ZS_CFG_TEXTURE | ZS_CFG_ABUFFER |
-                                  ZS_CFG_PRIORITY_ONLY))
+        if (c.flags & ~(unsigned)ZS_CFG_ALL)
             allowed |= BIT(ZS_ERR_ARGUMENT);
         if ((c.flags & ZS_CFG_TEXTURE) && (c.flags & ZS_CFG_ABUFFER))
             allowed |= BIT(ZS_ERR_ARGUMENT); /* refused together (renderer.c) */
@@ -498,7 +507,10 @@ static int decode_scene(fz_reader *d, scene *s)
 #ifdef ZS_CFG_NO_ZLINE
     {
         uint8_t f = fz_u8(d);
-        s->cfg.flags = (uint16_t)(f < 240 ? (f % 4u) : f); /* rarely an unknown bit */
+        /* NO_ZLINE and FLAT_ONLY from the low bits, the A-buffer in a quarter
+         * of the inputs, rarely an unknown bit */
+        s->cfg.flags = (uint16_t)(f < 240 ? (f % 4u) | ((f / 4u) % 4u == 3u ? ZS_CFG_ABUFFER : 0u)
+                                          : (unsigned)f << 8);
     }
 #endif
     decode_camera(d, s);
@@ -517,6 +529,7 @@ static int decode_scene(fz_reader *d, scene *s)
     s->stop_after = (pl & 2u) ? 1 + (pl >> 2) % 8u : 0;
     s->pad = fz_u8(d) % 8u;
     s->misuse = fz_u8(d);
+    s->aa = fz_u8(d);
     return 1;
 }
 
@@ -606,7 +619,11 @@ static void check_work(const zs_stats *a, const zs_stats *b, uint64_t rows, uint
     uint64_t D = b->depth_evals - a->depth_evals, P = b->pixels_shaded - a->pixels_shaded;
     FZ_CHECK(b->rows - a->rows == rows, "rows %u -> %u for %llu rows", a->rows, b->rows,
              (unsigned long long)rows);
-    if (mode == ZS_MODE_SPAN) {
+    if (mode == ZS_MODE_WARNOCK) {
+        /* windows, not a walk: only the rows and the pixels written */
+        FZ_CHECK(P == rows * w, "warnock pixels_shaded %llu != rows * W = %llu",
+                 (unsigned long long)P, (unsigned long long)(rows * w));
+    } else if (mode == ZS_MODE_SPAN) {
         uint64_t xrow = min64(A * (A > 0 ? A - 1 : 0) / 2, w - 1);
         FZ_CHECK(X <= rows * xrow, "crossings %llu > rows %llu * min(A(A-1)/2, W-1) = %llu (A %llu)",
                  (unsigned long long)X, (unsigned long long)rows, (unsigned long long)(rows * xrow),
@@ -730,7 +747,9 @@ static void check_stats_identity(const zs_stats *s, const zs_config *cfg)
              s->verts_stored, cfg->max_vertices);
 }
 
-static void run_frame(zs_renderer *r, const scene *s, zs_visibility mode, int id16, frame_out *o)
+/* aa: the A-buffer mode asked for after the shading (-1: none asked) */
+static void run_frame(zs_renderer *r, const scene *s, zs_visibility mode, int id16, int aa,
+                      frame_out *o)
 {
     zs_status st;
     zt_recs_clear(&o->recs);
@@ -765,12 +784,31 @@ static void run_frame(zs_renderer *r, const scene *s, zs_visibility mode, int id
     }
     o->bpp = zs_format_bytes(o->fmt);
     FZ_CHECK(o->bpp >= 1 && o->bpp <= 3, "format %d has %u bytes", (int)o->fmt, o->bpp);
+    if (aa >= 0) {
+        /* the header: needs ZS_CFG_ABUFFER and span mode unless off */
+        int can = aa == ZS_AA_OFF || ((s->cfg.flags & ZS_CFG_ABUFFER) && mode == ZS_MODE_SPAN);
+        st = zs_frame_antialias(r, (zs_aa_mode)aa);
+        FZ_CHECK(st == (can ? ZS_OK : ZS_ERR_MODE), "frame_antialias(%d) in mode %d, flags %#x "
+                 "returned %d (%s)", aa, (int)mode, s->cfg.flags, (int)st, zs_strerror(st));
+        if (!can)
+            aa = ZS_AA_OFF;
+    }
     /* draws */
     uint32_t tags = 0;
     for (int i = 0; i < s->nmesh; i++) {
         const fmesh *f = &s->mesh[i];
         zs_stats before = *now;
         size_t nrec = o->recs.n;
+        if (aa == ZS_AA_TRANSPARENT) {
+            uint8_t op = (uint8_t)(s->aa & 2u ? 255u - (unsigned)(i * 85) : (unsigned)(i * 85));
+            st = zs_draw_opacity(r, op);
+            FZ_CHECK(st == ZS_OK, "draw_opacity(%u) returned %d (%s)", op, (int)st,
+                     zs_strerror(st));
+        } else if (aa >= 0 && i == 0) {
+            st = zs_draw_opacity(r, 128);
+            FZ_CHECK(st == ZS_ERR_MODE, "draw_opacity outside a transparent frame returned %d",
+                     (int)st);
+        }
         st = zs_draw(r, &f->m, f->has_model ? &f->model : NULL);
         FZ_CHECK(BIT(st) & f->allowed, "draw %d returned %d (%s), allowed %#x", i, (int)st,
                  zs_strerror(st), f->allowed);
@@ -834,9 +872,18 @@ static void run_frame(zs_renderer *r, const scene *s, zs_visibility mode, int id
     const zs_stats *f = &o->st;
     FZ_CHECK(f->rows == (uint32_t)o->nrendered, "stats.rows %u, %d rendered", f->rows,
              o->nrendered);
+    if (mode == ZS_MODE_WARNOCK) {
+        /* Warnock counts a record skipped in every band whose pool it missed
+         * (warnock.c gather), so skipped and drawn can overlap */
+        FZ_CHECK(f->tris_drawn <= f->records, "warnock drawn %u > records %u", f->tris_drawn,
+                 f->records);
+        return;
+    }
     FZ_CHECK(f->tris_drawn + f->records_skipped <= f->records,
              "drawn %u + skipped %u > records %u", f->tris_drawn, f->records_skipped, f->records);
-    if (o->complete)
+    /* (an anti-aliased frame also stores records that reach sub-samples but
+     * no pixel centre: the walk never activates those) */
+    if (o->complete && aa <= ZS_AA_OFF)
         FZ_CHECK(f->tris_drawn + f->records_skipped == f->records,
                  "complete frame: drawn %u + skipped %u != records %u", f->tris_drawn,
                  f->records_skipped, f->records);
@@ -900,6 +947,45 @@ static int recs_prefix(const zt_recs *a, const zt_recs *b)
     }
     return 1;
 }
+
+/* Frame b equals frame a (span mode) byte for byte, with the same rows,
+ * geometry statistics and setup records; walk: the active-edge figures
+ * too (the modes that walk the same active list). */
+static void same_frames(const char *what, const frame_out *a, const frame_out *b, int walk,
+                        int w, int h)
+{
+    const zs_stats *p = &a->st, *q = &b->st;
+    FZ_CHECK(a->fmt == b->fmt && a->nrendered == b->nrendered,
+             "span and %s frames differ in format or rows", what);
+#define SAME(f) FZ_CHECK(p->f == q->f, "span " #f " %u != %s %u", p->f, what, q->f)
+    SAME(tris_submitted); SAME(tris_culled); SAME(tris_rejected); SAME(tris_clipped);
+    SAME(tris_empty); SAME(tris_dropped); SAME(tris_stored); SAME(records);
+    SAME(verts_stored); SAME(verts_dropped); SAME(saturated); SAME(rows);
+    if (walk) {
+        SAME(tris_drawn); SAME(records_skipped); SAME(max_active_edges);
+    }
+#undef SAME
+    FZ_CHECK(recs_prefix(&b->recs, &a->recs) && a->recs.n == b->recs.n,
+             "setup records differ between span and %s", what);
+    size_t rowbytes = (size_t)w * a->bpp;
+    for (int y = 0; y < h; y++) {
+        FZ_CHECK(a->rendered[y] == b->rendered[y], "row %d rendered in span or %s only", y, what);
+        if (!a->rendered[y])
+            continue;
+        const uint8_t *u = a->img + (size_t)y * rowbytes, *v = b->img + (size_t)y * rowbytes;
+        if (memcmp(u, v, rowbytes) != 0) {
+            size_t i = 0;
+            while (u[i] == v[i])
+                i++;
+            FZ_CHECK(0, "span != %s at row %d pixel %zu (format %d): %02x vs %02x", what, y,
+                     i / a->bpp, (int)a->fmt, u[i], v[i]);
+        }
+    }
+}
+
+/* floor(v / 16) */
+static int floor16(int32_t v) { return (int)(v >= 0 ? v / 16 : -((15 - v) / 16)); }
+
 
 static uint16_t id_at(const frame_out *o, int w, int x, int y)
 {
@@ -989,7 +1075,7 @@ static void check_mono(const scene *s, const frame_out *id)
     zs_config c = s->cfg;
     zs_renderer r;
     int w = c.width, h = c.height, band = 1 + (s->misuse + (unsigned)w) % 11u;
-    c.flags = (uint16_t)(c.flags | ZS_CFG_MONO | ZS_CFG_LINES);
+    c.flags = (uint16_t)((c.flags | ZS_CFG_MONO | ZS_CFG_LINES) & ~ZS_CFG_ABUFFER);
     if (zs_arena_bytes(&c) > sizeof arena || zs_init(&r, arena, sizeof arena, &c) != ZS_OK)
         return;
     if (!mono_frame(&r, s, ZS_MODE_SPAN, ZS_FMT_GRAY8, 0, h, g_grey))
@@ -1034,9 +1120,9 @@ static int g_verbose;
 static void dump_scene(const scene *s)
 {
     const zs_camera *c = &s->cam;
-    fprintf(stderr, "config %ux%u tris %u verts %u edges %u; arena offset %u\n", s->cfg.width,
-            s->cfg.height, s->cfg.max_triangles, s->cfg.max_vertices, s->cfg.max_active_edges,
-            s->arena_off);
+    fprintf(stderr, "config %ux%u tris %u verts %u edges %u flags %#x; arena offset %u; aa %#x\n",
+            s->cfg.width, s->cfg.height, s->cfg.max_triangles, s->cfg.max_vertices,
+            s->cfg.max_active_edges, s->cfg.flags, s->arena_off, s->aa);
     fprintf(stderr, "camera kind %d view", s->cam_kind);
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 4; j++)
@@ -1077,7 +1163,7 @@ static void dump_recs(const char *what, const zt_recs *rs)
 }
 
 static scene g_s;
-static frame_out g_span, g_zline, g_id;
+static frame_out g_span, g_zline, g_id, g_warn, g_plain, g_aa;
 static zt_recs g_big_recs;
 static uint8_t g_cov_ok[MAXH][MAXW], g_cov_any[MAXH][MAXW];
 
@@ -1107,7 +1193,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 
     size_t need = zs_arena_bytes(cfg);
 #ifdef ZS_CFG_NO_ZLINE
-    if (cfg->flags & ~(unsigned)(ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES)) {
+    if ((cfg->flags & ~(unsigned)ZS_CFG_ALL) ||
+        ((cfg->flags & ZS_CFG_ABUFFER) && (cfg->flags & (ZS_CFG_TEXTURE | ZS_CFG_PRIORITY_ONLY)))) {
         static uint8_t some[64];
         zs_renderer r0;
         FZ_CHECK(need == 0, "zs_arena_bytes with unknown flags %#x = %zu", cfg->flags, need);
@@ -1152,7 +1239,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     FZ_CHECK(st == ZS_OK, "frame_begin returned %d (%s)", (int)st, zs_strerror(st));
 
     /* span and zline in the decoded format */
-    run_frame(&r, s, ZS_MODE_SPAN, 0, &g_span);
+    run_frame(&r, s, ZS_MODE_SPAN, 0, -1, &g_span);
     if (g_verbose)
         dump_recs("span", &g_span.recs);
     if (NO_ZLINE(*cfg)) {
@@ -1168,42 +1255,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             zt_recs_hook(&g_zline.recs, g_span.recs.v[i].tag, g_span.recs.v[i].xy,
                          g_span.recs.v[i].z);
     } else {
-        run_frame(&r, s, ZS_MODE_ZLINE, 0, &g_zline);
+        run_frame(&r, s, ZS_MODE_ZLINE, 0, -1, &g_zline);
     }
-    FZ_CHECK(g_span.fmt == g_zline.fmt && g_span.nrendered == g_zline.nrendered,
-             "frames differ in format or rows");
-    {
-        const zs_stats *a = &g_span.st, *b = &g_zline.st;
-#define SAME(f) FZ_CHECK(a->f == b->f, "span " #f " %u != zline %u", a->f, b->f)
-        SAME(tris_submitted); SAME(tris_culled); SAME(tris_rejected); SAME(tris_clipped);
-        SAME(tris_empty); SAME(tris_dropped); SAME(tris_stored); SAME(records);
-        SAME(tris_drawn); SAME(verts_stored); SAME(verts_dropped); SAME(records_skipped);
-        SAME(saturated); SAME(rows); SAME(max_active_edges);
-#undef SAME
-        FZ_CHECK(recs_prefix(&g_zline.recs, &g_span.recs) && g_span.recs.n == g_zline.recs.n,
-                 "setup records differ between the modes");
-    }
-    size_t rowbytes = (size_t)W * g_span.bpp;
-    for (int y = 0; y < H; y++) {
-        FZ_CHECK(g_span.rendered[y] == g_zline.rendered[y], "row %d rendered in one mode only", y);
-        if (!g_span.rendered[y])
-            continue;
-        const uint8_t *a = g_span.img + (size_t)y * rowbytes, *b = g_zline.img + (size_t)y * rowbytes;
-        if (memcmp(a, b, rowbytes) != 0) {
-            size_t i = 0;
-            while (a[i] == b[i])
-                i++;
-            FZ_CHECK(0, "span != zline at row %d pixel %zu (format %d): %02x vs %02x", y,
-                     i / g_span.bpp, (int)g_span.fmt, a[i], b[i]);
-        }
-    }
+    same_frames("zline", &g_span, &g_zline, 1, W, H);
 
     /* ID16 frame: coverage against the reference rasterizer */
     const frame_out *id = &g_span;
     unsigned last_bpp = g_zline.bpp;
     if (g_span.fmt != ZS_FMT_ID16) {
         last_bpp = 2;
-        run_frame(&r, s, ZS_MODE_SPAN, 1, &g_id);
+        run_frame(&r, s, ZS_MODE_SPAN, 1, -1, &g_id);
         id = &g_id;
         FZ_CHECK(g_id.fmt == ZS_FMT_ID16, "ID16 frame in format %d", (int)g_id.fmt);
         FZ_CHECK(g_id.st.records == g_span.st.records && g_id.nrendered == g_span.nrendered,
@@ -1327,6 +1388,64 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         default: break;
         }
     }
+    /* Warnock mode: the span frame byte for byte, in every format and band
+     * plan; anti-aliasing is refused there (ZS_ERR_MODE) */
+    run_frame(&r, s, ZS_MODE_WARNOCK, 0, s->aa & 4u ? ZS_AA_EDGES : -1, &g_warn);
+    /* (with a full active pool each mode leaves out its own records) */
+    if (g_span.st.records_skipped == 0 && g_warn.st.records_skipped == 0)
+        same_frames("warnock", &g_span, &g_warn, 0, W, H);
+
+    /* The A-buffer. Off, a renderer with it renders as one without; on, the
+     * frame keeps to its buffers (band guards, stride padding, ASan on the
+     * exact arena), every status is the header's, and rows that no stored
+     * record comes within a pixel of are the aliased rows. */
+    if (cfg->flags & ZS_CFG_ABUFFER) {
+        zs_config pc = *cfg;
+        pc.flags = (uint16_t)(pc.flags & ~ZS_CFG_ABUFFER);
+        size_t pneed = zs_arena_bytes(&pc);
+        FZ_CHECK(pneed > 0 && pneed < need, "arena without the A-buffer %zu, with %zu", pneed,
+                 need);
+        uint8_t *pblock = malloc(pneed);
+        zs_renderer pr;
+        FZ_CHECK(zs_init(&pr, pblock, pneed, &pc) == ZS_OK, "init without the A-buffer");
+        run_frame(&pr, s, ZS_MODE_SPAN, 0, -1, &g_plain);
+        same_frames("no-abuffer", &g_plain, &g_span, 1, W, H);
+        free(pblock);
+
+        zs_aa_mode am = s->aa & 1u ? ZS_AA_TRANSPARENT : ZS_AA_EDGES;
+        run_frame(&r, s, ZS_MODE_SPAN, 0, (int)am, &g_aa);
+        const zs_stats *a = &g_aa.st;
+        FZ_CHECK(g_aa.nrendered == g_span.nrendered && g_aa.fmt == g_span.fmt,
+                 "A-buffer frame: %d rows, format %d", g_aa.nrendered, (int)g_aa.fmt);
+        FZ_CHECK(a->aa_max_fragments <= ZS_ABUFFER_FRAGMENTS &&
+                     a->aa_pixels <= (uint32_t)g_aa.nrendered * (uint32_t)W &&
+                     a->aa_overflow <= a->aa_pixels,
+                 "A-buffer stats: pixels %u fragments %u max %u overflow %u", a->aa_pixels,
+                 a->aa_fragments, a->aa_max_fragments, a->aa_overflow);
+        static uint8_t near_rec[MAXH];
+        memset(near_rec, 0, sizeof near_rec);
+        for (size_t i = 0; i < g_aa.recs.n; i++) {
+            const int32_t *xy = g_aa.recs.v[i].xy;
+            int32_t lo = xy[1], hi = xy[1];
+            for (int k = 3; k < 6; k += 2) {
+                lo = xy[k] < lo ? xy[k] : lo;
+                hi = xy[k] > hi ? xy[k] : hi;
+            }
+            for (int y = floor16(lo) - 1; y <= floor16(hi) + 1; y++)
+                if (y >= 0 && y < H)
+                    near_rec[y] = 1;
+        }
+        size_t rb = (size_t)W * g_aa.bpp;
+        for (int y = 0; y < H; y++)
+            if (g_aa.rendered[y] && !near_rec[y])
+                FZ_CHECK(memcmp(g_aa.img + (size_t)y * rb, g_span.img + (size_t)y * rb, rb) == 0,
+                         "A-buffer row %d differs from the aliased row, no record near it", y);
+    } else if (s->aa & 8u) {
+        /* refused without the flag (ZS_ERR_MODE): the frame stays aliased */
+        run_frame(&r, s, ZS_MODE_SPAN, 0, ZS_AA_EDGES, &g_aa);
+        same_frames("refused-aa", &g_span, &g_aa, 1, W, H);
+    }
+
     /* the 1-bit formats join the same scene */
     if (g_span.complete && id->nrendered == H && s->cfg.max_triangles <= 600 &&
         s->cfg.max_vertices <= 600 && s->cfg.max_active_edges <= 64)

@@ -32,103 +32,12 @@
 #include <cmocka.h>
 
 #include "emu_mono.h"
+#include "pcore.h"
 #include "zspan/panel.h"
 
 static const char *const mono_panels[] = {"ssd1306-128x64", "ssd1306-128x32", "sh1106-132x64",
                                           "ssd1680-122x250"};
 
-/* ---- a scene for the core ---- */
-
-typedef struct scene {
-    int16_t pos[3 * 90];
-    uint16_t idx[3 * 30];
-    zs_color vcol[90];
-    zs_mesh mesh;
-} scene;
-
-static uint32_t rng(uint32_t *s)
-{
-    *s = *s * 1664525u + 1013904223u;
-    return *s >> 8;
-}
-
-/* 30 triangles over the screen, in front of the camera at depths 2..6 */
-static void make_scene(scene *s, uint32_t seed)
-{
-    int i;
-    for (i = 0; i < 90; i++) {
-        int cx = (int)(rng(&seed) % 4000) - 2000, cy = (int)(rng(&seed) % 4000) - 2000;
-        s->pos[3 * i] = (int16_t)(cx + (int)(rng(&seed) % 2400) - 1200);
-        s->pos[3 * i + 1] = (int16_t)(cy + (int)(rng(&seed) % 2400) - 1200);
-        s->pos[3 * i + 2] = (int16_t)(-2000 - (int)(rng(&seed) % 4000));
-        s->vcol[i] = rng(&seed) & 0xFFFFFFu;
-    }
-    for (i = 0; i < 30; i++) {
-        /* counter-clockwise seen from the camera: order by the sign of the area */
-        int a = 3 * i, b = 3 * i + 1, c = 3 * i + 2;
-        double x0 = s->pos[3 * a] / (double)-s->pos[3 * a + 2], y0 = s->pos[3 * a + 1] / (double)-s->pos[3 * a + 2];
-        double x1 = s->pos[3 * b] / (double)-s->pos[3 * b + 2], y1 = s->pos[3 * b + 1] / (double)-s->pos[3 * b + 2];
-        double x2 = s->pos[3 * c] / (double)-s->pos[3 * c + 2], y2 = s->pos[3 * c + 1] / (double)-s->pos[3 * c + 2];
-        double area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
-        s->idx[3 * i] = (uint16_t)a;
-        s->idx[3 * i + 1] = (uint16_t)(area > 0 ? b : c);
-        s->idx[3 * i + 2] = (uint16_t)(area > 0 ? c : b);
-    }
-    memset(&s->mesh, 0, sizeof s->mesh);
-    s->mesh.positions = s->pos;
-    s->mesh.indices = s->idx;
-    s->mesh.vertex_colors = s->vcol;
-    s->mesh.scale = ZS_FX(1) / 1000;
-    s->mesh.vertex_count = 90;
-    s->mesh.triangle_count = 30;
-}
-
-typedef struct core {
-    zs_renderer r;
-    uint8_t *arena;
-} core;
-
-static void core_open(core *c, unsigned w, unsigned h)
-{
-    zs_config cfg = zs_config_default((uint16_t)w, (uint16_t)h, 200, 200, 200);
-    cfg.flags = ZS_CFG_MONO | ZS_CFG_LINES;
-    size_t n = zs_arena_bytes(&cfg);
-    c->arena = malloc(n);
-    assert_int_equal(zs_init(&c->r, c->arena, n, &cfg), ZS_OK);
-}
-
-static void frame(core *c, const scene *s, zs_format fmt, unsigned mono)
-{
-    zs_camera cam;
-    assert_int_equal(zs_camera_look_at(&cam, zs_vec3_make(0, 0, 0), zs_vec3_make(0, 0, -ZS_FX(1)),
-                                       zs_vec3_make(0, ZS_FX(1), 0)),
-                     ZS_OK);
-    assert_int_equal(zs_camera_perspective(&cam, ZS_FX(70), ZS_FX(1) / 2, ZS_FX(50)), ZS_OK);
-    assert_int_equal(zs_frame_begin(&c->r, &cam, ZS_MODE_SPAN), ZS_OK);
-    zs_shade_params sp = zs_shade_default();
-    sp.shading = ZS_SHADE_GOURAUD;
-    sp.format = fmt;
-    sp.mono = (uint8_t)mono;
-    sp.background = 0x202020;
-    assert_int_equal(zs_frame_shading(&c->r, &sp), ZS_OK);
-    assert_int_equal(zs_draw(&c->r, &s->mesh, NULL), ZS_OK);
-}
-
-/* The core's picture as 0/1 per pixel. */
-static void reference(core *c, const scene *s, zs_format fmt, unsigned mono, unsigned w, unsigned h,
-                      uint8_t *bits)
-{
-    size_t n = zs_panel_window_bytes(fmt, w, h), stride = zs_format_stride(fmt, w);
-    uint8_t *img = calloc(n, 1);
-    frame(c, s, fmt, mono);
-    assert_int_equal(zs_render_rows(&c->r, 0, (int)h, img, stride), ZS_OK);
-    for (unsigned y = 0; y < h; y++)
-        for (unsigned x = 0; x < w; x++)
-            bits[y * w + x] = fmt == ZS_FMT_MONO_PAGE
-                                  ? (img[(y / 8) * w + x] >> (y % 8)) & 1u
-                                  : (img[y * stride + x / 8] >> (7 - x % 8)) & 1u;
-    free(img);
-}
 
 /* ---- a recording bus in front of the emulator ---- */
 
@@ -211,18 +120,18 @@ static unsigned run_image(const char *name, unsigned rot, int i2c, unsigned mono
     emu_mono e;
     rec *r = malloc(sizeof *r);
     zs_panel p;
-    core c;
-    scene s;
+    pc_core c;
+    pc_scene s;
     assert_non_null(d);
     assert_non_null(m);
     assert_int_equal(emu_mono_init(&e, m), 0);
     rec_open(r, &e, i2c);
     assert_int_equal(zs_panel_init(&p, d, &r->bus, fmt, rot), ZS_PANEL_OK);
-    core_open(&c, p.width, p.height);
-    make_scene(&s, seed);
+    pc_core_open(&c, p.width, p.height, 0x202020);
+    pc_make_scene(&s, seed);
     uint8_t *want = malloc((size_t)p.width * p.height), *got = malloc((size_t)p.width * p.height);
-    reference(&c, &s, fmt, mono, p.width, p.height, want);
-    frame(&c, &s, fmt, mono);
+    pc_reference(&c, &s, fmt, mono, p.width, p.height, want);
+    pc_frame(&c, &s, fmt, mono);
     static uint8_t b0[4096], b1[4096];
     size_t bb = zs_panel_window_bytes(fmt, p.width, fmt == ZS_FMT_MONO_PAGE ? 8u * (unsigned)((band + 7) / 8) : (unsigned)band);
     zs_panel_frame_stats st;
@@ -243,7 +152,7 @@ static unsigned run_image(const char *name, unsigned rot, int i2c, unsigned mono
                       (unsigned long)r->port.clocks, "");
     free(want);
     free(got);
-    free(c.arena);
+    pc_core_close(&c);
     emu_mono_free(&e);
     free(r);
     return bad;
@@ -308,21 +217,21 @@ static void test_wrong_table(void **state)
     emu_mono e;
     rec *r = malloc(sizeof *r);
     zs_panel p;
-    core c;
-    scene s;
+    pc_core c;
+    pc_scene s;
     assert_int_equal(emu_mono_init(&e, emu_mono_model_find("ssd1306-128x64")), 0);
     rec_open(r, &e, 0);
     assert_int_equal(zs_panel_init(&p, &bad, &r->bus, ZS_FMT_MONO_PAGE, 0), ZS_PANEL_OK);
-    core_open(&c, 128, 64);
-    make_scene(&s, 5);
+    pc_core_open(&c, 128, 64, 0x202020);
+    pc_make_scene(&s, 5);
     uint8_t want[128 * 64], got[128 * 64];
-    reference(&c, &s, ZS_FMT_MONO_PAGE, 0, 128, 64, want);
-    frame(&c, &s, ZS_FMT_MONO_PAGE, 0);
+    pc_reference(&c, &s, ZS_FMT_MONO_PAGE, 0, 128, 64, want);
+    pc_frame(&c, &s, ZS_FMT_MONO_PAGE, 0);
     static uint8_t b0[1024];
     assert_int_equal(zs_panel_stream(&p, &c.r, b0, NULL, sizeof b0, 64, NULL, NULL), ZS_PANEL_OK);
     emu_mono_view(&e, 0, got);
     assert_true(memcmp(want, got, sizeof want) != 0);
-    free(c.arena);
+    pc_core_close(&c);
     emu_mono_free(&e);
     free(r);
 }
@@ -333,8 +242,8 @@ static void test_ssd1306_stream(void **state)
     emu_mono e;
     rec *r = malloc(sizeof *r);
     zs_panel p;
-    core c;
-    scene s;
+    pc_core c;
+    pc_scene s;
     for (int i2c = 0; i2c < 2; i2c++) {
         assert_int_equal(emu_mono_init(&e, emu_mono_model_find("ssd1306-128x64")), 0);
         rec_open(r, &e, i2c);
@@ -353,9 +262,9 @@ static void test_ssd1306_stream(void **state)
         size_t n0 = r->n;
         uint64_t clocks0 = r->port.clocks;
         uint32_t frames0 = r->port.frames;
-        core_open(&c, 128, 64);
-        make_scene(&s, 3);
-        frame(&c, &s, ZS_FMT_MONO_PAGE, 0);
+        pc_core_open(&c, 128, 64, 0x202020);
+        pc_make_scene(&s, 3);
+        pc_frame(&c, &s, ZS_FMT_MONO_PAGE, 0);
         static uint8_t b0[1024], b1[1024];
         zs_panel_frame_stats st;
         assert_int_equal(zs_panel_stream(&p, &c.r, b0, b1, 256, 16, NULL, &st), ZS_PANEL_OK);
@@ -379,7 +288,7 @@ static void test_ssd1306_stream(void **state)
                           (unsigned long)(r->port.frames - frames0), clocks,
                           clocks / 400e3 * 1e3, clocks / 1e6 * 1e3);
         }
-        free(c.arena);
+        pc_core_close(&c);
         emu_mono_free(&e);
     }
     /* a device that does not answer: the first command fails */
@@ -423,8 +332,8 @@ static void test_sh1106_pages(void **state)
     emu_mono e;
     rec *r = malloc(sizeof *r);
     zs_panel p;
-    core c;
-    scene s;
+    pc_core c;
+    pc_scene s;
     assert_int_equal(emu_mono_init(&e, emu_mono_model_find("sh1106-132x64")), 0);
     rec_open(r, &e, 0);
     assert_int_equal(zs_panel_init(&p, &zs_panel_sh1106_132x64, &r->bus, ZS_FMT_MONO_PAGE, 0),
@@ -434,9 +343,9 @@ static void test_sh1106_pages(void **state)
     assert_int_equal(find_seq(r, 0, "C", &pump, 1), -1);
     assert_int_equal(find_seq(r, 0, "C", &mode, 1), -1);
     size_t n0 = r->n;
-    core_open(&c, 128, 64);
-    make_scene(&s, 4);
-    frame(&c, &s, ZS_FMT_MONO_PAGE, 0);
+    pc_core_open(&c, 128, 64, 0x202020);
+    pc_make_scene(&s, 4);
+    pc_frame(&c, &s, ZS_FMT_MONO_PAGE, 0);
     static uint8_t b0[1024];
     assert_int_equal(zs_panel_stream(&p, &c.r, b0, NULL, sizeof b0, 64, NULL, NULL), ZS_PANEL_OK);
     /* page p: B0|p, column 2 (0x02, 0x10), then 128 data bytes */
@@ -453,7 +362,7 @@ static void test_sh1106_pages(void **state)
     assert_int_equal(zs_panel_window(&p, 0, 0, 128, 64), ZS_PANEL_OK);
     assert_int_equal(zs_panel_write(&p, b0, 100), ZS_PANEL_OK);
     assert_int_equal(zs_panel_write(&p, b0, 100), ZS_PANEL_ERR_BUFFER);
-    free(c.arena);
+    pc_core_close(&c);
     emu_mono_free(&e);
     free(r);
 }
@@ -464,8 +373,8 @@ static void test_ssd1680_refresh(void **state)
     emu_mono e;
     rec *r = malloc(sizeof *r);
     zs_panel p;
-    core c;
-    scene s;
+    pc_core c;
+    pc_scene s;
     assert_int_equal(emu_mono_init(&e, emu_mono_model_find("ssd1680-122x250")), 0);
     rec_open(r, &e, 0);
     assert_int_equal(zs_panel_init(&p, &zs_panel_ssd1680_122x250, &r->bus, ZS_FMT_MONO_MSB, 0),
@@ -476,9 +385,9 @@ static void test_ssd1680_refresh(void **state)
     assert_true(find_seq(r, 0, "CP", entry, 2) > isw);
     size_t n0 = r->n;
     uint32_t d0 = r->delay_ms;
-    core_open(&c, 122, 250);
-    make_scene(&s, 8);
-    frame(&c, &s, ZS_FMT_MONO_MSB, 0);
+    pc_core_open(&c, 122, 250, 0x202020);
+    pc_make_scene(&s, 8);
+    pc_frame(&c, &s, ZS_FMT_MONO_MSB, 0);
     static uint8_t b0[1024];
     assert_int_equal(zs_panel_stream(&p, &c.r, b0, NULL, sizeof b0, 32, NULL, NULL), ZS_PANEL_OK);
     static const uint8_t win[] = {0x44, 0x00, 0x0F, 0x45, 0x00, 0x00, 0xF9, 0x00,
@@ -492,13 +401,13 @@ static void test_ssd1680_refresh(void **state)
     assert_int_equal(e.errors, 0);
 
     /* partial refresh without the base: flagged */
-    make_scene(&s, 9);
-    frame(&c, &s, ZS_FMT_MONO_MSB, 0);
+    pc_make_scene(&s, 9);
+    pc_frame(&c, &s, ZS_FMT_MONO_MSB, 0);
     p.partial = 1;
     assert_int_equal(zs_panel_stream(&p, &c.r, b0, NULL, sizeof b0, 32, NULL, NULL), ZS_PANEL_OK);
     assert_true(e.errors & EMU_M_BASE);
-    free(c.arena);
-    core_open(&c, 122, 250);
+    pc_core_close(&c);
+    pc_core_open(&c, 122, 250, 0x202020);
 
     /* the right way: full refresh of frame A, A again as the base, partial B */
     emu_mono_free(&e);
@@ -506,10 +415,10 @@ static void test_ssd1680_refresh(void **state)
     rec_open(r, &e, 0);
     assert_int_equal(zs_panel_init(&p, &zs_panel_ssd1680_122x250, &r->bus, ZS_FMT_MONO_MSB, 0),
                      ZS_PANEL_OK);
-    make_scene(&s, 10);
-    frame(&c, &s, ZS_FMT_MONO_MSB, 0);
+    pc_make_scene(&s, 10);
+    pc_frame(&c, &s, ZS_FMT_MONO_MSB, 0);
     assert_int_equal(zs_panel_stream(&p, &c.r, b0, NULL, sizeof b0, 32, NULL, NULL), ZS_PANEL_OK);
-    frame(&c, &s, ZS_FMT_MONO_MSB, 0);
+    pc_frame(&c, &s, ZS_FMT_MONO_MSB, 0);
     p.write_base = 1;
     size_t n1 = r->n;
     assert_int_equal(zs_panel_stream(&p, &c.r, b0, NULL, sizeof b0, 32, NULL, NULL), ZS_PANEL_OK);
@@ -518,11 +427,11 @@ static void test_ssd1680_refresh(void **state)
     assert_int_equal(find_seq(r, n1, "C", &act, 1), -1); /* no refresh */
     p.write_base = 0;
     p.partial = 1;
-    scene s2;
-    make_scene(&s2, 12);
+    pc_scene s2;
+    pc_make_scene(&s2, 12);
     uint8_t *want = malloc(122 * 250), *got = malloc(122 * 250);
-    reference(&c, &s2, ZS_FMT_MONO_MSB, 0, 122, 250, want);
-    frame(&c, &s2, ZS_FMT_MONO_MSB, 0);
+    pc_reference(&c, &s2, ZS_FMT_MONO_MSB, 0, 122, 250, want);
+    pc_frame(&c, &s2, ZS_FMT_MONO_MSB, 0);
     size_t n2 = r->n;
     assert_int_equal(zs_panel_stream(&p, &c.r, b0, NULL, sizeof b0, 32, NULL, NULL), ZS_PANEL_OK);
     static const uint8_t part[] = {0x22, 0xFF, 0x20};
@@ -534,7 +443,7 @@ static void test_ssd1680_refresh(void **state)
     assert_memory_equal(want, got, 122 * 250);
     free(want);
     free(got);
-    free(c.arena);
+    pc_core_close(&c);
     emu_mono_free(&e);
     free(r);
 }

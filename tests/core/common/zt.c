@@ -394,6 +394,31 @@ zs_mesh zt_scene_mesh(const zt_scene *s, int use_fcol, int use_vcol)
     return m;
 }
 
+zs_mesh zt_scene_grey_quad(zt_scene *s, int w, int h, int v)
+{
+    zs_color col = ZS_RGB(v, v, v);
+    int a, b, c, d;
+    zt_scene_init(s, w, h, 128);
+    a = zt_scene_vertex_px(s, -2, -2, 2.0, col);
+    b = zt_scene_vertex_px(s, w + 2, -2, 2.0, col);
+    c = zt_scene_vertex_px(s, w + 2, h + 2, 2.0, col);
+    d = zt_scene_vertex_px(s, -2, h + 2, 2.0, col);
+    zt_scene_tri_front(s, a, b, c, col);
+    zt_scene_tri_front(s, a, c, d, col);
+    return zt_scene_mesh(s, 1, 0);
+}
+
+void zt_random_light(zt_rng *g, zs_shade_params *sp, zs_fixed min_intensity)
+{
+    zs_fixed dx, dy;
+    sp->ambient = (zs_fixed)zt_range(g, 0, ZS_FX(1) / 2);
+    sp->light_count = 1;
+    dx = (zs_fixed)zt_range(g, -ZS_FX(2), ZS_FX(2));
+    dy = (zs_fixed)zt_range(g, -ZS_FX(2), ZS_FX(2));
+    sp->lights[0].direction = zs_vec3_make(dx, dy, ZS_FX(1));
+    sp->lights[0].intensity = (zs_fixed)zt_range(g, min_intensity, ZS_FX(3) / 2);
+}
+
 void zt_camera_std(zs_camera *cam, zs_fixed near_z, zs_fixed far_z)
 {
     zs_status st = zs_camera_look_at(cam, zs_vec3_make(0, 0, 0), zs_vec3_make(0, 0, -ZS_FX(1)),
@@ -413,12 +438,20 @@ void zt_camera_std(zs_camera *cam, zs_fixed near_z, zs_fixed far_z)
 
 void zt_ctx_init(zt_ctx *c, int w, int h, int max_tris, int max_verts, int max_edges)
 {
+    zt_ctx_init_flags(c, w, h, max_tris, max_verts, max_edges, 0);
+}
+
+void zt_ctx_init_flags(zt_ctx *c, int w, int h, int max_tris, int max_verts, int max_edges,
+                       uint16_t flags)
+{
     memset(c, 0, sizeof *c);
     c->cfg = zs_config_default((uint16_t)w, (uint16_t)h, (uint16_t)max_tris,
                                (uint16_t)max_verts, (uint16_t)max_edges);
+    c->cfg.flags = flags;
     c->arena_size = zs_arena_bytes(&c->cfg);
     if (c->arena_size == 0) {
-        fprintf(stderr, "zt_ctx_init: zs_arena_bytes == 0 for %dx%d\n", w, h);
+        fprintf(stderr, "zt_ctx_init: zs_arena_bytes == 0 for %dx%d flags %#x\n", w, h,
+                (unsigned)flags);
         abort();
     }
     c->arena = (uint8_t *)zt_xrealloc(NULL, c->arena_size);
@@ -427,6 +460,17 @@ void zt_ctx_init(zt_ctx *c, int w, int h, int max_tris, int max_verts, int max_e
         fprintf(stderr, "zt_ctx_init: zs_init failed: %s\n", zs_strerror(st));
         abort();
     }
+}
+
+zs_status zt_begin(zt_ctx *c, const zs_camera *cam, zs_visibility mode,
+                   const zs_shade_params *sp, const zs_mesh *m)
+{
+    zs_status st = zs_frame_begin(&c->r, cam, mode);
+    if (st == ZS_OK)
+        st = zs_frame_shading(&c->r, sp);
+    if (st == ZS_OK && m)
+        st = zs_draw(&c->r, m, NULL);
+    return st;
 }
 
 void zt_ctx_free(zt_ctx *c)

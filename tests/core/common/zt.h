@@ -130,6 +130,13 @@ void zt_scene_tri_front(zt_scene *s, int a, int b, int c, zs_color fc);
 /* Mesh view of the scene (arrays stay owned by the scene). use_fcol/use_vcol
  * select the optional colour arrays. */
 zs_mesh zt_scene_mesh(const zt_scene *s, int use_fcol, int use_vcol);
+/* Resets s (w x h, unit_div 128) to one screen-filling quad of grey level v
+ * (two front triangles 2 px past every edge, depth 2) and returns its mesh
+ * with face colours. */
+zs_mesh zt_scene_grey_quad(zt_scene *s, int w, int h, int v);
+/* One light at random (a direction in front, intensity min_intensity ..
+ * 1.5) and an ambient level of 0 .. 0.5, into sp. */
+void zt_random_light(zt_rng *g, zs_shade_params *sp, zs_fixed min_intensity);
 /* Pixel position of a world point under the standard camera (no snapping). */
 void zt_world_to_px(int w, int h, double x, double y, double z, double *px, double *py);
 
@@ -167,7 +174,14 @@ typedef struct zt_ctx {
 /* Allocates exactly zs_arena_bytes(cfg) with malloc and inits; aborts the
  * test program on failure. */
 void zt_ctx_init(zt_ctx *c, int w, int h, int max_tris, int max_verts, int max_edges);
+/* The same with config flags (ZS_CFG_*). */
+void zt_ctx_init_flags(zt_ctx *c, int w, int h, int max_tris, int max_verts, int max_edges,
+                       uint16_t flags);
 void zt_ctx_free(zt_ctx *c);
+/* zs_frame_begin, zs_frame_shading(sp) and, when m is not NULL, zs_draw(m)
+ * without a model matrix; the first status that is not ZS_OK, else ZS_OK. */
+zs_status zt_begin(zt_ctx *c, const zs_camera *cam, zs_visibility mode,
+                   const zs_shade_params *sp, const zs_mesh *m);
 
 /* Renders the rest of the frame into img (w * bpp bytes per row, tight)
  * with zs_render_rows in bands of band rows (band >= h: whole frame in one

@@ -150,6 +150,10 @@ static int parse_args(int argc, char **argv, sim_render_opts *o)
             o->aa = 1;
             continue;
         }
+        if (strcmp(a, "--painter") == 0) {
+            o->painter = 1;
+            continue;
+        }
         if (strcmp(a, "--unlit") == 0) {
             o->unlit = 1;
             continue;
@@ -916,8 +920,8 @@ int sim_cmd_render(int argc, char **argv)
         model_ptr = &model;
     }
 
-    if (o.order != SIM_ORDER_SUBMIT && o.mode != ZS_MODE_PRIORITY) {
-        fprintf(stderr, "zspan-sim: --order needs --mode priority\n");
+    if ((o.order != SIM_ORDER_SUBMIT || o.painter) && o.mode != ZS_MODE_PRIORITY) {
+        fprintf(stderr, "zspan-sim: --order and --painter need --mode priority\n");
         rc = SIM_EXIT_USAGE;
         goto done;
     }
@@ -1064,9 +1068,10 @@ int sim_cmd_render(int argc, char **argv)
         fprintf(stderr, "zspan-sim: out of memory\n");
         goto done;
     }
-    st = sim_render_image(&r, img, stride, o.height, (int)o.band);
+    st = o.painter ? zs_paint_frame(&r, img, stride)
+                   : sim_render_image(&r, img, stride, o.height, (int)o.band);
     if (st != ZS_OK) {
-        rc = core_error("zs_render_frame", st);
+        rc = core_error(o.painter ? "zs_paint_frame" : "zs_render_frame", st);
         goto done;
     }
     if (dump != NULL) {
@@ -1103,6 +1108,12 @@ int sim_cmd_render(int argc, char **argv)
                    o.shade == SHADE_IDS ? "ids" : o.shade == SHADE_GOURAUD ? "gouraud" : "flat",
                    (unsigned long)sim_fnv1a(img, stride * (size_t)o.height));
             sim_print_stats(stdout, s);
+            if (o.painter)
+                printf("  painter: %lu pixel writes, %.2f per pixel (the background's "
+                       "included), %lu records painted\n",
+                       (unsigned long)s->pixels_shaded,
+                       (double)s->pixels_shaded / ((double)o.width * o.height),
+                       (unsigned long)s->tris_drawn);
             if (o.aa || o.n_opacity)
                 printf("  a-buffer: %lu pixels resolved from %lu fragments (at most %lu), %lu "
                        "left aliased (pool full), %lu triangles left out\n",

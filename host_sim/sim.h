@@ -63,6 +63,7 @@ typedef struct sim_render_opts {
     int up_axis;          /* ZS_UP_* of app/zs_model.h: the files' up axis */
     zs_visibility mode;
     int order;            /* --order (priority mode): SIM_ORDER_* */
+    int painter;          /* --painter: zs_paint_frame into the whole image */
     int shade;
     const char *out;
     int out_set;

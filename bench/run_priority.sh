@@ -9,7 +9,8 @@
 # instructions of zs_bspb_build inside zspan-meshc --bsp).
 #
 # Environment (set by mk/priority.mk): MESHC, FW, FW_M0, HOST, BSP_DIR,
-# ASSIMP_MODELS, BENCH_GEN, FW_QEMU, FW_QEMU_FLAGS, OUT, WORK.
+# ASSIMP_MODELS, BENCH_GEN, FW_QEMU, FW_QEMU_FLAGS, OUT, WORK; and for the scene
+# cells' section CELLS_HOST, CELLS_FW, CELLS_FW_M0 (bench/run_cells.sh).
 set -u
 set -o pipefail
 : "${MESHC:?}" "${FW:?}" "${FW_M0:?}" "${HOST:?}" "${BSP_DIR:?}" "${OUT:?}"
@@ -99,4 +100,8 @@ field() { # file scene mode key -> value from the A line
         echo "| $s | $tin | $nodes | $splits | $slivers | $tout | $vout | $stack | $ir |"
     done
 } > "$OUT"
+# the scene cells' section (bench/run_cells.sh), when its programs are given
+if [ -n "${CELLS_HOST:-}" ]; then
+    WORK="$WORK" bash "$(dirname "$0")/run_cells.sh" >> "$OUT" || exit 1
+fi
 cat "$OUT"

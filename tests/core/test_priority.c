@@ -12,7 +12,7 @@
  *    zs_draw in span mode (RGB888, a unique colour per source triangle):
  *    random separated boxes, stacks of tilted plates whose planes cut each
  *    other (many splits), a room with pillars seen from many eye positions
- *    inside and outside, and assimp's test models. The bound: a pixel may
+ *    inside and outside, and assimp's test models (duck and Wuson included). The bound: a pixel may
  *    differ only within R pixels of an edge of a triangle that has a split
  *    vertex, R = 1 + (max_snap + 1) * (units to pixels at that triangle's
  *    nearest vertex): the rounding of the split vertex (max_snap, at most
@@ -511,6 +511,10 @@ static void run_scene(zt_ctx *c, mesh_buf *m, int div, const double (*views)[6],
 {
     zs_bspb_result res;
     build_bsp(m, &res, what);
+    if (res.split_weight != 8)
+        printf("test_priority bsp %s: built with split weight %d (with 8 the walk would need "
+               "more than ZS_BSP_MAX_STACK), walk stack %d\n",
+               what, res.split_weight, res.stack);
     zs_fixed scale = ZS_FX(1) / div;
     zs_mesh src = mesh_of(m, m->pos, m->idx, m->fcol, m->nv, m->nt, scale);
     zs_mesh out = mesh_of(m, res.mesh.pos, res.mesh.idx, res.mesh.fcol, res.mesh.nv, res.mesh.nt,
@@ -708,6 +712,8 @@ static void test_bsp_models(void **state)
         "/usr/share/assimp/models/OBJ/box.obj",
         "/usr/share/assimp/models/OBJ/spider.obj",
         "/usr/share/assimp/models/PLY/cube.ply",
+        "/usr/share/assimp/models/Collada/duck.dae",
+        "/usr/share/assimp/models/OBJ/WusonOBJ.obj",
     };
     zt_ctx c;
     zt_ctx_init(&c, W, H, 20000, 40000, 4096);

@@ -86,9 +86,12 @@ check-priority-m4: $(PRI_FW_M4) $(PRI_FW_M0) $(PRI_HOST) | deps
 	BENCH_ARGS=quick $(PRI_HOST) > $(PRI_CHECK)/host.txt || rc=1; \
 	grep '^R ' $(PRI_CHECK)/host.txt | awk '{print $$3, $$4, $$5, $$7}' > $(PRI_CHECK)/host.sums; \
 	n=$$(wc -l < $(PRI_CHECK)/host.sums); \
-	if [ $$rc = 0 ] && [ $$n = 8 ] && cmp -s $(PRI_CHECK)/m4.sums $(PRI_CHECK)/host.sums && \
-	   cmp -s $(PRI_CHECK)/m0.sums $(PRI_CHECK)/host.sums; then \
-	    echo "check-priority-m4: host == M0 == M4 checksums ($$n frames, span and priority-bsp)"; \
+	paint=$$(awk '$$2 == "priority-paint" {print $$1, $$3, $$4}' $(PRI_CHECK)/host.sums); \
+	band=$$(awk '$$2 == "priority-bsp" {print $$1, $$3, $$4}' $(PRI_CHECK)/host.sums); \
+	if [ $$rc = 0 ] && [ $$n = 12 ] && cmp -s $(PRI_CHECK)/m4.sums $(PRI_CHECK)/host.sums && \
+	   cmp -s $(PRI_CHECK)/m0.sums $(PRI_CHECK)/host.sums && [ "$$paint" = "$$band" ]; then \
+	    echo "check-priority-m4: host == M0 == M4 checksums ($$n frames, span, priority-bsp and" \
+	         "priority-paint; painted == rendered)"; \
 	else cat $(PRI_CHECK)/m4.txt $(PRI_CHECK)/host.txt; \
 	    echo "check-priority-m4: host, M0 and M4 differ or failed"; rc=1; fi; \
 	exit $$rc

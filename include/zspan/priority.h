@@ -121,8 +121,9 @@ zs_status zs_depth_sort(zs_renderer *r, zs_sort_kind kind, uint32_t budget);
  * painted whole here). Call after the draws, instead of zs_render_rows; the
  * frame is then done (zs_pick still answers). Pixels are written once per
  * covering record plus once for the background: stats.pixels_shaded counts
- * the writes (the overdraw), stats.spans the runs. Needs no arena beyond
- * zs_init's. ZS_ERR_NULL, ZS_ERR_STATE outside the draws of a frame,
+ * the writes (the overdraw), stats.spans the runs. It uses one slot of the
+ * active pool and no edges, so a renderer that only paints can be made with
+ * max_active_edges 2 (a smaller arena). ZS_ERR_NULL, ZS_ERR_STATE outside the draws of a frame,
  * ZS_ERR_MODE for a frame not in ZS_MODE_PRIORITY or with the A-buffer on,
  * ZS_ERR_FORMAT for the 1-bit formats and ZS_FMT_GRAY4, ZS_ERR_BUFFER for a
  * stride below width * bytes per pixel (or height rows of it past the

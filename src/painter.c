@@ -3,8 +3,9 @@
  * front into a whole frame buffer, and the order and records handed out.
  *
  * A record is painted over exactly the centres the span walk gives it: on
- * each row the columns [left, right) of its two edge chains, computed
- * exactly as the walk steps them (centre.c), clamped to the screen. Its
+ * each row the columns [left, right) of its two edge chains, the walk's
+ * exact columns (centre.c's rule, stepped here without a division per row),
+ * clamped to the screen. Its
  * planes are the ones zs_activate makes, in the active pool's slot 0 (idle
  * outside zs_render_rows), so flat pixels, Gouraud colours and textures are
  * the walk's. In ZS_MODE_PRIORITY the walk shows at each centre the lowest
@@ -12,6 +13,42 @@
  * top, so the two images are equal byte for byte. */
 #include "zs_centre.h"
 #include "zspan/priority.h"
+
+/* An edge's column ceil(x(Y) - 0.5) stepped down the rows without a
+ * division: at row Y the exact value is (q * den - r) / den with 0 <= r <
+ * den, and each row adds 16 * dx = s * den + t (0 <= t < den) to the
+ * numerator. The start is the one 64-bit division zs_rec_left_col makes. */
+typedef struct col_step {
+    int32_t q, r, s, t, den;
+} col_step;
+
+/* Edge a -> b (b below a) at the centre row Y (1/16 px). */
+static void step_init(col_step *c, const zs_vert *a, const zs_vert *b, int32_t Y)
+{
+    int32_t dx = b->x - a->x, dy = b->y - a->y; /* dy > 0 where the edge is used */
+    int64_t num = ((int64_t)a->x - 8) * dy + ((int64_t)Y - a->y) * dx;
+    int64_t q;
+    c->den = 16 * dy;
+    q = num / c->den;
+    if (q * c->den < num)
+        q++;
+    c->q = (int32_t)q;
+    c->r = (int32_t)(q * c->den - num);
+    c->s = (16 * dx) / c->den; /* toward zero, then floored */
+    if (c->s * c->den > 16 * dx)
+        c->s--;
+    c->t = 16 * dx - c->s * c->den;
+}
+
+static void step_row(col_step *c)
+{
+    c->q += c->s;
+    c->r -= c->t;
+    if (c->r < 0) {
+        c->q++;
+        c->r += c->den;
+    }
+}
 
 zs_status zs_paint_frame(zs_renderer *r, void *buf, size_t stride)
 {
@@ -52,19 +89,42 @@ zs_status zs_paint_frame(zs_renderer *r, void *buf, size_t stride)
             continue;
         /* the planes refer to the row the walk activates the record on */
         zs_rec_planes(r, k, &v, v.row0, &a[0], ac ? &ac[0] : 0, 1);
-        for (y = v.row0; y < end; y++) {
-            int32_t x0 = zs_clampi(zs_rec_left_col(&v, y), 0, width);
-            int32_t x1 = zs_clampi(zs_rec_right_col(&v, y), 0, width);
-            uint8_t *row = img + (size_t)y * stride;
-            if (x0 >= x1)
-                continue; /* an inverted span is never entered by the walk either */
-            if (a[0].flags & ZS_ACT_GOURAUD)
-                zs_fill_gouraud(r, &ac[0], y - a[0].y0, row, x0, x1);
+        {
+            /* the long edge and the short chain, the short one switching to
+             * s1 -> s2 at the first centre row at or below s1 */
+            const zs_vert *s0 = v.s[0], *s1 = v.s[1], *s2 = v.s[2];
+            int32_t Y = 16 * v.row0 + 8;
+            col_step lng, sht;
+            int upper = Y < s1->y;
+            step_init(&lng, s0, s2, Y);
+            if (upper)
+                step_init(&sht, s0, s1, Y);
             else
-                zs_fill_flat(row, x0, x1, r->priv.bpp, a[0].pixel);
-            writes += (uint32_t)(x1 - x0);
-            r->stats.spans++;
-            painted = 1;
+                step_init(&sht, s1, s2, Y);
+            for (y = v.row0; y < end; y++, Y += 16) {
+                int32_t x0, x1;
+                uint8_t *row = img + (size_t)y * stride;
+                if (y > v.row0) {
+                    step_row(&lng);
+                    if (upper && Y >= s1->y) {
+                        upper = 0;
+                        step_init(&sht, s1, s2, Y);
+                    } else {
+                        step_row(&sht);
+                    }
+                }
+                x0 = zs_clampi(v.long_left ? lng.q : sht.q, 0, width);
+                x1 = zs_clampi(v.long_left ? sht.q : lng.q, 0, width);
+                if (x0 >= x1)
+                    continue; /* an inverted span is never entered by the walk either */
+                if (a[0].flags & ZS_ACT_GOURAUD)
+                    zs_fill_gouraud(r, &ac[0], y - a[0].y0, row, x0, x1);
+                else
+                    zs_fill_flat(row, x0, x1, r->priv.bpp, a[0].pixel);
+                writes += (uint32_t)(x1 - x0);
+                r->stats.spans++;
+                painted = 1;
+            }
         }
         r->stats.tris_drawn += (uint32_t)painted;
     }

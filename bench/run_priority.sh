@@ -59,8 +59,8 @@ field() { # file scene mode key -> value from the A line
     echo "sphere285 and cubes need no split, and their priority frames equal the span frames"
     echo "byte for byte. priority-paint: the same BSP frames painted back to front into the"
     echo "framebuffer by zs_paint_frame instead of the 240 zs_render_rows calls (their checksums"
-    echo "equal priority-bsp's on every CPU; the arena is the same, the framebuffer is the"
-    echo "caller's)."
+    echo "equal priority-bsp's on every CPU; its arena needs one active slot and no edges, the"
+    echo "framebuffer is the caller's)."
     echo
     echo "| scene | mode | M4 instructions | M0 instructions | arena bytes | records | vertices |"
     echo "|---|---|---:|---:|---:|---:|---:|"

@@ -420,17 +420,21 @@ static int16_t q14(double x)
     return (int16_t)(v > 16384 ? 16384 : v < -16384 ? -16384 : v);
 }
 
-const char *zs_bspb_build(const zs_bspb_mesh *in, const zs_bspb_params *p, zs_bspb_result *out)
+/* One build with the given splitter score; *too_deep set when it failed for
+ * the walk's stack alone. */
+static const char *build_once(const zs_bspb_mesh *in, int weight, int cands, zs_bspb_result *out,
+                              int *too_deep)
 {
     builder b;
     tlist all = {0};
     memset(out, 0, sizeof *out);
     memset(&b, 0, sizeof b);
+    *too_deep = 0;
     if (in->nv > MAX_OUT || in->nt > MAX_OUT)
         return "more than 65535 vertices or triangles";
     b.in = in;
-    b.weight = p && p->split_weight > 0 ? p->split_weight : 8;
-    b.cands = p && p->candidates > 0 ? p->candidates : 24;
+    b.weight = weight;
+    b.cands = cands;
     for (size_t i = 0; i < in->nv; i++) {
         uint32_t v = add_vertex(&b);
         for (unsigned k = 0; k < 3; k++) {
@@ -469,6 +473,7 @@ const char *zs_bspb_build(const zs_bspb_mesh *in, const zs_bspb_params *p, zs_bs
             snprintf(msg, sizeof msg, "the walk of the tree would need %d entries, more than "
                      "ZS_BSP_MAX_STACK", out->stack);
             b.err = msg;
+            *too_deep = 1;
         }
     }
     free(all.t);
@@ -553,4 +558,20 @@ const char *zs_bspb_build(const zs_bspb_mesh *in, const zs_bspb_params *p, zs_bs
         return b.err;
     }
     return NULL;
+}
+
+const char *zs_bspb_build(const zs_bspb_mesh *in, const zs_bspb_params *p, zs_bspb_result *out)
+{
+    int weight = p && p->split_weight > 0 ? p->split_weight : 8;
+    int cands = p && p->candidates > 0 ? p->candidates : 24, too_deep;
+    for (;;) {
+        const char *err = build_once(in, weight, cands, out, &too_deep);
+        /* a tree too deep to walk: with the default score, weigh balance
+         * more (halving the split weight) until it fits or the weight is 1 */
+        if (!err)
+            out->split_weight = weight;
+        if (!err || !too_deep || (p && p->split_weight > 0) || weight == 1)
+            return err;
+        weight /= 2;
+    }
 }

@@ -6,7 +6,9 @@
  *
  * Splitters are the planes of the input triangles; at each node up to
  * `candidates` of them are scored by split_weight * splits + |front - back|
- * and the lowest wins (ties: the first). A vertex within one position unit
+ * and the lowest wins (ties: the first); with the default weight, a tree whose
+ * walk would need more than ZS_BSP_MAX_STACK entries is built again with the
+ * weight halved (balance counts more) down to 1. A vertex within one position unit
  * of a plane counts as in it, so the roundings below never make a piece
  * straddle the plane that cut it.
  *
@@ -54,6 +56,7 @@ typedef struct zs_bspb_result {
     int depth;            /* longest root-to-leaf path, nodes */
     int stack;            /* the walk's worst pending entries (<= ZS_BSP_MAX_STACK) */
     double max_snap;      /* largest rounding of a split vertex, position units */
+    int split_weight;     /* the splitter score's weight the tree was built with */
 } zs_bspb_result;
 
 /* Builds the tree; returns NULL, or a message (out is then freed). The

@@ -105,8 +105,10 @@ static void grid(cb *b, int g)
         for (size_t i = 0; i < n; i++)
             if (col[i] == c)
                 tmp[k++] = b->order[i];
-        if (k > first && b->c[0].nchild < 64)
-            b->c[0].child[b->c[0].nchild++] = new_cell(b, first, k - first);
+        if (k > first && b->c[0].nchild < 64) {
+            int child = new_cell(b, first, k - first); /* may move b->c */
+            b->c[0].child[b->c[0].nchild++] = child;
+        }
     }
     memcpy(b->order, tmp, n * sizeof *tmp);
     free(col);

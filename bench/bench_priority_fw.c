@@ -17,6 +17,10 @@
  * Instructions: SysTick ticks times the calibrated instructions per tick
  * (qemu -icount shift=0) around zs_frame_begin + the draw + the 240
  * zs_render_rows calls. "quick" on the command line: frame 0 only.
+ *
+ * MODE priority-paint: the BSP frame painted back to front into the
+ * framebuffer by zs_paint_frame instead of rendered in rows; its checksums
+ * must be the priority-bsp ones (painter == band image, on every CPU).
  */
 #include "bench_scenes.h"
 #include "bsp_cluster.h"
@@ -61,14 +65,14 @@ int main(void)
         const bench_scene *s = &bench_scenes[si];
         const zs_bsp *tree = k_trees[si];
         int pri;
-        for (pri = 0; pri < 2; pri++) {
+        for (pri = 0; pri < 3; pri++) { /* span, priority-bsp, priority-paint */
             const zs_mesh *mesh = pri ? tree->mesh : s->mesh;
             zs_config cfg = zs_config_default(BENCH_W, BENCH_H, mesh->triangle_count,
                                               mesh->vertex_count, 4096);
             size_t need, at;
             uint8_t *fb;
             uint32_t peak_tris = 0, peak_verts = 0, peak_edges = 0;
-            const char *mname = pri ? "priority-bsp" : "span";
+            const char *mname = pri == 2 ? "priority-paint" : pri ? "priority-bsp" : "span";
             int f;
             /* priority frames keep no depth planes */
             cfg.flags = ZS_CFG_FLAT_ONLY | ZS_CFG_NO_ZLINE | (pri ? ZS_CFG_PRIORITY_ONLY : 0u);
@@ -95,7 +99,9 @@ int main(void)
                 e = zs_frame_begin(&r, &cam, pri ? ZS_MODE_PRIORITY : ZS_MODE_SPAN);
                 if (e == ZS_OK)
                     e = pri ? zs_draw_bsp(&r, tree, &mv) : zs_draw(&r, mesh, &mv);
-                for (y = 0; e == ZS_OK && y < BENCH_H; y++)
+                if (e == ZS_OK && pri == 2)
+                    e = zs_paint_frame(&r, fb, BENCH_W * 2);
+                for (y = 0; e == ZS_OK && pri != 2 && y < BENCH_H; y++)
                     e = zs_render_rows(&r, y, 1, fb + (size_t)y * BENCH_W * 2, BENCH_W * 2);
                 b = port_ticks();
                 if (e != ZS_OK) {

@@ -9,7 +9,8 @@
 # instructions of zs_bspb_build inside zspan-meshc --bsp).
 #
 # Environment (set by mk/priority.mk): MESHC, FW, FW_M0, HOST, BSP_DIR,
-# ASSIMP_MODELS, BENCH_GEN, FW_QEMU, FW_QEMU_FLAGS, OUT, WORK.
+# ASSIMP_MODELS, BENCH_GEN, FW_QEMU, FW_QEMU_FLAGS, OUT, WORK; and for the scene
+# cells' section CELLS_HOST, CELLS_FW, CELLS_FW_M0 (bench/run_cells.sh).
 set -u
 set -o pipefail
 : "${MESHC:?}" "${FW:?}" "${FW_M0:?}" "${HOST:?}" "${BSP_DIR:?}" "${OUT:?}"
@@ -56,12 +57,15 @@ field() { # file scene mode key -> value from the A line
     echo "(-O2) and Cortex-M0 code (-Os) on the same machine. Arena: zs_arena_bytes for the"
     echo "largest pool use of the frames (flat only, no z-buffer line). Checksums $same;"
     echo "sphere285 and cubes need no split, and their priority frames equal the span frames"
-    echo "byte for byte."
+    echo "byte for byte. priority-paint: the same BSP frames painted back to front into the"
+    echo "framebuffer by zs_paint_frame instead of the 240 zs_render_rows calls (their checksums"
+    echo "equal priority-bsp's on every CPU; its arena needs one active slot and no edges, the"
+    echo "framebuffer is the caller's)."
     echo
     echo "| scene | mode | M4 instructions | M0 instructions | arena bytes | records | vertices |"
     echo "|---|---|---:|---:|---:|---:|---:|"
     for s in sphere285 cubes wuson cluster; do
-        for m in span priority-bsp; do
+        for m in span priority-bsp priority-paint; do
             echo "| $s | $m | $(mean "$WORK/m4.txt" $s $m) | $(mean "$WORK/m0.txt" $s $m) |" \
                  "$(field "$WORK/m4.txt" $s $m arena) | $(field "$WORK/m4.txt" $s $m tris) |" \
                  "$(field "$WORK/m4.txt" $s $m verts) |"
@@ -99,4 +103,8 @@ field() { # file scene mode key -> value from the A line
         echo "| $s | $tin | $nodes | $splits | $slivers | $tout | $vout | $stack | $ir |"
     done
 } > "$OUT"
+# the scene cells' section (bench/run_cells.sh), when its programs are given
+if [ -n "${CELLS_HOST:-}" ]; then
+    WORK="$WORK" bash "$(dirname "$0")/run_cells.sh" >> "$OUT" || exit 1
+fi
 cat "$OUT"

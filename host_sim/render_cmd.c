@@ -152,6 +152,10 @@ static int parse_args(int argc, char **argv, sim_render_opts *o)
             o->aa = 1;
             continue;
         }
+        if (strcmp(a, "--painter") == 0) {
+            o->painter = 1;
+            continue;
+        }
         if (strcmp(a, "--unlit") == 0) {
             o->unlit = 1;
             continue;
@@ -244,6 +248,12 @@ static int parse_args(int argc, char **argv, sim_render_opts *o)
             if (m < 0 || zs_opt_choice(SIM_PROG, "--order", v, orders, 3, &k) != 0)
                 return SIM_EXIT_USAGE;
             o->order = SIM_ORDER_BSP + k;
+        } else if (OPT("--cells")) {
+            static const char *const kinds[] = {"kd", "grid"};
+            int k;
+            if (m < 0 || zs_opt_choice(SIM_PROG, "--cells", v, kinds, 2, &k) != 0)
+                return SIM_EXIT_USAGE;
+            o->cells = 1 + k; /* ZS_CELLS_KD = 0, ZS_CELLS_GRID = 1 */
         } else if (OPT("--shade")) {
             static const char *const shades[] = {"flat", "gouraud", "ids"};
             if (m < 0 || zs_opt_choice(SIM_PROG, "--shade", v, shades, 3, &o->shade) != 0)
@@ -872,6 +882,7 @@ int sim_cmd_render(int argc, char **argv)
     zs_bspb_result bsp;          /* --order bsp: the tree of all chunks */
     zs_mesh bsp_mesh;
     unsigned long bsp_tris = 0;
+    size_t n_cells = 0;            /* --cells: the scene's cells */
 
     memset(&scene, 0, sizeof scene);
     memset(&recs, 0, sizeof recs);
@@ -967,8 +978,13 @@ int sim_cmd_render(int argc, char **argv)
         model_ptr = &model;
     }
 
-    if (o.order != SIM_ORDER_SUBMIT && o.mode != ZS_MODE_PRIORITY) {
-        fprintf(stderr, "zspan-sim: --order needs --mode priority\n");
+    if ((o.order != SIM_ORDER_SUBMIT || o.painter) && o.mode != ZS_MODE_PRIORITY) {
+        fprintf(stderr, "zspan-sim: --order and --painter need --mode priority\n");
+        rc = SIM_EXIT_USAGE;
+        goto done;
+    }
+    if (o.cells && (o.order == SIM_ORDER_BSP || o.n_opacity)) {
+        fprintf(stderr, "zspan-sim: --cells: not with --order bsp (one tree) or --opacity\n");
         rc = SIM_EXIT_USAGE;
         goto done;
     }
@@ -1091,7 +1107,10 @@ int sim_cmd_render(int argc, char **argv)
                 goto done;
             }
         }
-        if (o.order == SIM_ORDER_BSP) {
+        if (o.cells) {
+            st = sim_draw_cells(&r, &scene, model_ptr, o.cells - 1, &n_cells);
+            i = scene.count; /* the cells hold every chunk */
+        } else if (o.order == SIM_ORDER_BSP) {
             zs_bsp tree = {bsp.nodes, &bsp_mesh, (uint16_t)bsp.node_count};
             st = zs_draw_bsp(&r, &tree, model_ptr);
             i = scene.count; /* one tree holds them all */
@@ -1099,7 +1118,10 @@ int sim_cmd_render(int argc, char **argv)
             st = zs_draw(&r, &scene.chunks[i].mesh, model_ptr);
         }
         if (st != ZS_OK) {
-            rc = core_error(o.order == SIM_ORDER_BSP ? "zs_draw_bsp" : "zs_draw", st);
+            rc = core_error(o.cells ? "zs_draw_cells"
+                            : o.order == SIM_ORDER_BSP ? "zs_draw_bsp"
+                                                       : "zs_draw",
+                            st);
             goto done;
         }
     }
@@ -1125,9 +1147,10 @@ int sim_cmd_render(int argc, char **argv)
         fprintf(stderr, "zspan-sim: out of memory\n");
         goto done;
     }
-    st = sim_render_image(&r, img, stride, o.height, (int)o.band);
+    st = o.painter ? zs_paint_frame(&r, img, stride)
+                   : sim_render_image(&r, img, stride, o.height, (int)o.band);
     if (st != ZS_OK) {
-        rc = core_error("zs_render_frame", st);
+        rc = core_error(o.painter ? "zs_paint_frame" : "zs_render_frame", st);
         goto done;
     }
     if (dump != NULL) {
@@ -1164,6 +1187,15 @@ int sim_cmd_render(int argc, char **argv)
                    o.shade == SHADE_IDS ? "ids" : o.shade == SHADE_GOURAUD ? "gouraud" : "flat",
                    (unsigned long)sim_fnv1a(img, stride * (size_t)o.height));
             sim_print_stats(stdout, s);
+            if (o.cells)
+                printf("  cells: %lu chunks in %lu cells (%s)\n", (unsigned long)scene.count,
+                       (unsigned long)n_cells, o.cells == 1 ? "k-d tree" : "uniform grid");
+            if (o.painter)
+                printf("  painter: %lu pixel writes, %.2f per pixel (the background's "
+                       "included), %lu records painted\n",
+                       (unsigned long)s->pixels_shaded,
+                       (double)s->pixels_shaded / ((double)o.width * o.height),
+                       (unsigned long)s->tris_drawn);
             if (o.aa || o.n_opacity)
                 printf("  a-buffer: %lu pixels resolved from %lu fragments (at most %lu), %lu "
                        "left aliased (pool full), %lu triangles left out\n",

@@ -63,6 +63,8 @@ typedef struct sim_render_opts {
     int up_axis;          /* ZS_UP_* of app/zs_model.h: the files' up axis */
     zs_visibility mode;
     int order;            /* --order (priority mode): SIM_ORDER_* */
+    int painter;          /* --painter: zs_paint_frame into the whole image */
+    int cells;            /* --cells: 0 none, 1 + ZS_CELLS_KD or ZS_CELLS_GRID */
     int shade;
     const char *out;
     int out_set;
@@ -96,6 +98,12 @@ typedef struct sim_render_opts {
 } sim_render_opts;
 
 int sim_render_parse(int argc, char **argv, sim_render_opts *o);
+
+/* --cells (host_sim/cells_draw.c): the scene's chunks as scene cells of kind
+ * (app/zs_cells_build.h) drawn with zs_draw_cells; *cell_count the cells. */
+struct zs_model;
+zs_status sim_draw_cells(zs_renderer *r, const struct zs_model *scene, const zs_mat34 *model,
+                         int kind, size_t *cell_count);
 void sim_render_opts_free(sim_render_opts *o);
 
 /* zspan-sim panel's parser (host_sim/panel_cmd.c) run on its own, for the

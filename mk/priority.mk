@@ -86,15 +86,20 @@ check-priority-m4: $(PRI_FW_M4) $(PRI_FW_M0) $(PRI_HOST) | deps
 	BENCH_ARGS=quick $(PRI_HOST) > $(PRI_CHECK)/host.txt || rc=1; \
 	grep '^R ' $(PRI_CHECK)/host.txt | awk '{print $$3, $$4, $$5, $$7}' > $(PRI_CHECK)/host.sums; \
 	n=$$(wc -l < $(PRI_CHECK)/host.sums); \
-	if [ $$rc = 0 ] && [ $$n = 8 ] && cmp -s $(PRI_CHECK)/m4.sums $(PRI_CHECK)/host.sums && \
-	   cmp -s $(PRI_CHECK)/m0.sums $(PRI_CHECK)/host.sums; then \
-	    echo "check-priority-m4: host == M0 == M4 checksums ($$n frames, span and priority-bsp)"; \
+	paint=$$(awk '$$2 == "priority-paint" {print $$1, $$3, $$4}' $(PRI_CHECK)/host.sums); \
+	band=$$(awk '$$2 == "priority-bsp" {print $$1, $$3, $$4}' $(PRI_CHECK)/host.sums); \
+	if [ $$rc = 0 ] && [ $$n = 12 ] && cmp -s $(PRI_CHECK)/m4.sums $(PRI_CHECK)/host.sums && \
+	   cmp -s $(PRI_CHECK)/m0.sums $(PRI_CHECK)/host.sums && [ "$$paint" = "$$band" ]; then \
+	    echo "check-priority-m4: host == M0 == M4 checksums ($$n frames, span, priority-bsp and" \
+	         "priority-paint; painted == rendered)"; \
 	else cat $(PRI_CHECK)/m4.txt $(PRI_CHECK)/host.txt; \
 	    echo "check-priority-m4: host, M0 and M4 differ or failed"; rc=1; fi; \
 	exit $$rc
 
-bench-priority: $(PRI_FW_M4) $(PRI_FW_M0) $(PRI_HOST) $(PRI_BSP_SRCS) $(MESHC) | deps
+bench-priority: $(PRI_FW_M4) $(PRI_FW_M0) $(PRI_HOST) $(PRI_BSP_SRCS) $(MESHC) \
+                $(CELLS_HOST) $(CELLS_FW_M4) $(CELLS_FW_M0) | deps
 	@MESHC=$(MESHC) FW=$(PRI_FW_M4) FW_M0=$(PRI_FW_M0) HOST=$(PRI_HOST) \
+	    CELLS_HOST=$(CELLS_HOST) CELLS_FW=$(CELLS_FW_M4) CELLS_FW_M0=$(CELLS_FW_M0) \
 	    BSP_DIR=$(PRI_BSP_DIR) ASSIMP_MODELS=$(ASSIMP_MODELS) BENCH_GEN=$(BENCH_GEN) \
 	    FW_QEMU="$(FW_QEMU)" FW_QEMU_FLAGS="$(FW_QEMU_FLAGS)" OUT=bench/priority.md \
 	    WORK=$(BENCH_BUILD)/priority bash bench/run_priority.sh
@@ -107,3 +112,47 @@ fuzz fuzz-build test-fuzz-smoke fuzz-merge: $(FUZZ_DIR)/fuzz_priority
 $(FUZZ_DIR)/fuzz_priority: tests/fuzz/fuzz_priority.c tests/fuzz/fuzz_util.h $(FUZZ_CORE_LIB) | deps
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer -o $@ $< $(FUZZ_CORE_LIB)
 endif
+
+# --- benchmark: scene cells, k-d tree against uniform grid (bench/bench_cells.c)
+#   build/bench/bench_cells               host: build time, culled share, cells visited (table)
+#   bench_cells --emit build/bench/cells/cells_data.c   the scenes and cells as C
+#   bench-priority runs both and appends the section to bench/priority.md
+CELLS_HOST := $(BENCH_BUILD)/bench_cells
+CELLS_DIR := $(BENCH_BUILD)/cells
+CELLS_DATA := $(CELLS_DIR)/cells_data.c
+CELLS_FW_M4 := $(FW_BUILD)/bench-cells-mps2-an386.elf
+CELLS_FW_M0 := $(FW_BUILD)/bench-cells-m0code-mps2-an386.elf
+CELLS_M4_OBJS := $(patsubst %.c,$(FW_BUILD)/m4/app/%.o,$(PORT_SRCS)) \
+                 $(FW_BUILD)/m4/app/$(PORT_DIR)/board_mps2_an386.o \
+                 $(FW_BUILD)/m4/cells/bench_cells_fw.o $(FW_BUILD)/m4/cells/cells_data.o
+CELLS_M0_OBJS := $(patsubst %.c,$(FW_BUILD)/m0/app/%.o,$(PORT_SRCS)) \
+                 $(FW_BUILD)/m0/app/board_m0code_an386.o \
+                 $(FW_BUILD)/m0/cells/bench_cells_fw.o $(FW_BUILD)/m0/cells/cells_data.o
+ALL_TARGETS += $(CELLS_HOST) $(CELLS_FW_M4) $(CELLS_FW_M0)
+
+$(CELLS_HOST): bench/bench_cells.c app/zs_cells_build.c app/zs_cells_build.h $(LIB) | deps
+	@mkdir -p $(@D)
+	$(CC) -std=c99 -Wall -Wextra -Werror -O2 -Iinclude -o $@ bench/bench_cells.c \
+	    app/zs_cells_build.c $(LIB) -lm
+$(CELLS_DATA): $(CELLS_HOST) | deps
+	@mkdir -p $(@D)
+	$(CELLS_HOST) --emit $@
+$(CELLS_DIR)/cells_data.h: $(CELLS_DATA) ;
+$(FW_BUILD)/m4/cells/%.o: bench/%.c $(CELLS_DIR)/cells_data.h $(FW_APP_DEPS) | deps
+	@mkdir -p $(@D)
+	$(ARM_CC) $(FW_M4_CPU) -O2 $(FW_COMMON) -I$(CELLS_DIR) -MMD -MP -c $< -o $@
+$(FW_BUILD)/m0/cells/%.o: bench/%.c $(CELLS_DIR)/cells_data.h $(FW_APP_DEPS) | deps
+	@mkdir -p $(@D)
+	$(ARM_CC) $(FW_M0_CPU) -Os $(FW_COMMON) -I$(CELLS_DIR) -MMD -MP -c $< -o $@
+$(FW_BUILD)/m4/cells/cells_data.o: $(CELLS_DATA) | deps
+	@mkdir -p $(@D)
+	$(ARM_CC) $(FW_M4_CPU) -O2 $(FW_COMMON) -I$(CELLS_DIR) -c $< -o $@
+$(FW_BUILD)/m0/cells/cells_data.o: $(CELLS_DATA) | deps
+	@mkdir -p $(@D)
+	$(ARM_CC) $(FW_M0_CPU) -Os $(FW_COMMON) -I$(CELLS_DIR) -c $< -o $@
+$(CELLS_FW_M4): $(CELLS_M4_OBJS) $(FW_CORE_M4_OBJS) $(PORT_DIR)/ld/mps2-an386.ld $(PORT_DIR)/ld/sections.ld
+	$(ARM_CC) $(FW_M4_CPU) -mthumb $(FW_LDFLAGS) -T $(PORT_DIR)/ld/mps2-an386.ld \
+	    -o $@ $(filter %.o,$^) $(FW_LIBS) > /dev/null
+$(CELLS_FW_M0): $(CELLS_M0_OBJS) $(FW_CORE_M0_OBJS) $(PORT_DIR)/ld/mps2-an386.ld $(PORT_DIR)/ld/sections.ld
+	$(ARM_CC) $(FW_M0_CPU) -mthumb $(FW_LDFLAGS) -T $(PORT_DIR)/ld/mps2-an386.ld \
+	    -o $@ $(filter %.o,$^) $(FW_LIBS) > /dev/null

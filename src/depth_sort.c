@@ -318,8 +318,14 @@ static void nns(sort_ctx *c)
         int restart = 0;
         for (j = i + 1; j < c->n; j++) {
             uint16_t q = c->list[j];
-            if (zmax_of(r, q) <= zmin)
-                break; /* this and every later one nearer than p */
+            if (zmax_of(r, q) <= zmin) {
+                /* the list is sorted but for the records moved ahead, which
+                 * sit right after p (a chain of moves): past them, this and
+                 * every later one is nearer than p */
+                if (c->aux[q] & MOVED)
+                    continue;
+                break;
+            }
             if (c->budget == 0) {
                 r->stats.sort_giveups++;
                 return; /* the rest stays in plain sorted order */

@@ -106,6 +106,55 @@ typedef enum zs_sort_kind {
  * pair tests (each a few hundred operations) and list moves of O(n). */
 zs_status zs_depth_sort(zs_renderer *r, zs_sort_kind kind, uint32_t budget);
 
+/* ---- painter's output (src/painter.c) ----
+ * The same orders streamed back to front, for a caller with a full frame
+ * buffer or a rasteriser of its own. Both read the frame's stored records
+ * after the draws (and zs_depth_sort, if used): record 0 is the nearest, so
+ * back to front is the highest record first. */
+
+/* Paints the whole frame into buf (row y at buf + y * stride) in the frame's
+ * byte format: the background, then every record from the last to record 0,
+ * each over the centres the span walk gives it (top-left rule, the same
+ * exact edge columns) with the same shading, so the image is the one
+ * zs_render_rows gives in ZS_MODE_PRIORITY, byte for byte (a frame that
+ * skipped records for want of active-pool room, stats.records_skipped, is
+ * painted whole here). Call after the draws, instead of zs_render_rows; the
+ * frame is then done (zs_pick still answers). Pixels are written once per
+ * covering record plus once for the background: stats.pixels_shaded counts
+ * the writes (the overdraw), stats.spans the runs. It uses one slot of the
+ * active pool and no edges, so a renderer that only paints can be made with
+ * max_active_edges 2 (a smaller arena). ZS_ERR_NULL, ZS_ERR_STATE outside the draws of a frame,
+ * ZS_ERR_MODE for a frame not in ZS_MODE_PRIORITY or with the A-buffer on,
+ * ZS_ERR_FORMAT for the 1-bit formats and ZS_FMT_GRAY4, ZS_ERR_BUFFER for a
+ * stride below width * bytes per pixel (or height rows of it past the
+ * address space). Work: one pass over the records, each row of each record
+ * a span fill. */
+zs_status zs_paint_frame(zs_renderer *r, void *buf, size_t stride);
+
+/* The frame's records back to front (the painter's order) into
+ * records[0 .. *count): *count is set to the record count in any case;
+ * ZS_ERR_CAPACITY (nothing written) when it exceeds capacity. records may be
+ * NULL with capacity 0 to ask for the count. Valid from zs_frame_begin until
+ * the next one (the order is final once the draws and any zs_depth_sort are
+ * done). ZS_ERR_NULL for r or count NULL, ZS_ERR_STATE with no frame begun. */
+zs_status zs_priority_order(const zs_renderer *r, uint16_t *records, uint32_t capacity,
+                            uint32_t *count);
+
+/* A stored record as the renderer draws it. */
+typedef struct zs_record_tri {
+    int16_t x[3], y[3]; /* screen vertices, 28.4 pixels, y down (a front face:
+                           counter-clockwise on the screen) */
+    uint32_t z[3];      /* window depth, Q2.30 */
+    uint32_t rgb[3];    /* colour at each vertex, RGB888 after light and fog (all
+                           three the face colour in flat shading); in a
+                           ZS_FMT_ID16 frame the tag */
+} zs_record_tri;
+
+/* Record `record` of the frame (0 .. stats.records - 1). ZS_ERR_NULL,
+ * ZS_ERR_STATE with no frame begun, ZS_ERR_ARGUMENT for a record past the
+ * stored ones. */
+zs_status zs_record_get(const zs_renderer *r, uint32_t record, zs_record_tri *out);
+
 #ifdef __cplusplus
 }
 #endif

@@ -171,6 +171,21 @@ static void test_city(void **state)
         obj_kd[k] = ct.obj[kd.order[k]];
         obj_gr[k] = ct.obj[gr.order[k]];
     }
+    /* every grid size and leaf size gives a layout the core accepts (a grid
+     * of 8 x 8 once wrote through a moved cell array: ASan would say so) */
+    for (int p = 1; p <= 8; p++) {
+        for (int kind = 0; kind < 2; kind++) {
+            zs_cellsb_result t;
+            ZT_CHECK(zs_cellsb_build(ct.lo, ct.hi, NOBJ, kind, p, &t) == NULL, "build %d %d",
+                     kind, p);
+            static zs_scene_object o[NOBJ];
+            for (int k = 0; k < NOBJ; k++)
+                o[k] = ct.obj[t.order[k]];
+            zs_cells cs = {t.cells, o, (uint16_t)t.cell_count, NOBJ};
+            ZT_ST(zs_cells_check(&cs), ZS_OK);
+            zs_cellsb_free(&t);
+        }
+    }
     zs_cells cells_kd = {kd.cells, obj_kd, (uint16_t)kd.cell_count, NOBJ};
     zs_cells cells_gr = {gr.cells, obj_gr, (uint16_t)gr.cell_count, NOBJ};
     ZT_ST(zs_cells_check(&cells_kd), ZS_OK);

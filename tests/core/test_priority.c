@@ -12,7 +12,7 @@
  *    zs_draw in span mode (RGB888, a unique colour per source triangle):
  *    random separated boxes, stacks of tilted plates whose planes cut each
  *    other (many splits), a room with pillars seen from many eye positions
- *    inside and outside, and assimp's test models. The bound: a pixel may
+ *    inside and outside, and assimp's test models (duck and Wuson included). The bound: a pixel may
  *    differ only within R pixels of an edge of a triangle that has a split
  *    vertex, R = 1 + (max_snap + 1) * (units to pixels at that triangle's
  *    nearest vertex): the rounding of the split vertex (max_snap, at most
@@ -21,6 +21,13 @@
  *    covers may be left uncovered (cracks), anywhere.
  *  - bad trees: out-of-range children, cycles, shared nodes, bad ranges and
  *    planes, too deep: ZS_ERR_BSP, and nothing stored.
+ *  - painter's output (zs_paint_frame, zs_priority_order, zs_record_get):
+ *    the full-frame painter's image equals the priority-mode band image byte
+ *    for byte on the walk's random scenes (every byte format, flat, Gouraud,
+ *    fog), on textured random scenes (every texture mode), on every BSP view above and on every sorted NNS scene (so it has
+ *    the ray caster's answer there too); the ordered list is checked pair by
+ *    pair against exact depths: where two records cover a centre, the later
+ *    one in the list is the nearer (the plain sort fails it); error codes.
  */
 #include "zt_test.h"
 
@@ -89,6 +96,206 @@ static void test_walk_oracle(void **state)
     zt_recs_free(&recs);
     zt_scene_free(&sc);
     zt_ctx_free(&c);
+}
+
+/* ---------------- painter's output against the band image ---------------- */
+
+static void test_painter_walk(void **state)
+{
+    (void)state;
+    zt_rng g;
+    zt_rng_seed(&g, SEED + 5);
+    zt_ctx c;
+    zt_ctx_init(&c, W, H, 600, 1800, 600);
+    zt_ctx small;
+    zt_ctx_init(&small, W, H, 600, 1800, 2);
+    zs_camera cam;
+    zt_camera_std(&cam, ZS_FX(1) / 2, ZS_FX(100));
+    zt_scene sc;
+    zt_scene_init(&sc, W, H, 128);
+    static const zs_format fmts[] = {ZS_FMT_ID16,  ZS_FMT_RGB565_BE, ZS_FMT_RGB888,
+                                     ZS_FMT_GRAY8, ZS_FMT_RGB666,    ZS_FMT_RGB565};
+    /* room for a stride wider than the row: bytes past it must stay */
+    static uint8_t band[W * H * 3], paint[(W * 3 + 5) * H];
+    unsigned long frames = 0, differ = 0, guard = 0, writes = 0, gouraud = 0;
+    for (int n = 0; n < 200; n++) {
+        zt_scene_reset(&sc);
+        zt_scene_random(&g, &sc, (int)zt_range(&g, 10, 60), ZT_SC_ALL, 0.5);
+        zs_format fmt = fmts[n % 6];
+        int smooth = fmt != ZS_FMT_ID16 && n % 2;
+        zs_mesh mesh = zt_scene_mesh(&sc, 1, smooth);
+        zs_shade_params sp = zs_shade_default();
+        sp.format = fmt;
+        sp.background = 0x203040u;
+        if (smooth) {
+            sp.shading = ZS_SHADE_GOURAUD;
+            if (n % 4 == 1) { /* fog too */
+                sp.fog.enabled = 1;
+                sp.fog.color = 0x8090A0u;
+                sp.fog.start = ZS_FX(1);
+                sp.fog.end = ZS_FX(8);
+            }
+        }
+        size_t bpp = zs_format_bytes(fmt), row = W * bpp, stride = row + (size_t)(n % 6);
+        memset(band, 0xAB, sizeof band);
+        ZT_ST(zt_frame(&c, &cam, ZS_MODE_PRIORITY, &sp, &mesh, 1, NULL, band, 1 + n % 9), ZS_OK);
+        ZT_CHECK(c.r.stats.records_skipped == 0, "scene %d: records skipped", n);
+        /* the painter needs one active slot: paint with the smallest edge pool */
+        zt_ctx *pc = n % 2 ? &small : &c;
+        ZT_ST(zs_frame_begin(&pc->r, &cam, ZS_MODE_PRIORITY), ZS_OK);
+        ZT_ST(zs_frame_shading(&pc->r, &sp), ZS_OK);
+        ZT_ST(zs_draw(&pc->r, &mesh, NULL), ZS_OK);
+        memset(paint, 0xCD, sizeof paint);
+        ZT_ST(zs_paint_frame(&pc->r, paint, stride), ZS_OK);
+        frames++;
+        writes += pc->r.stats.pixels_shaded;
+        gouraud += smooth;
+        int bad = 0;
+        for (int y = 0; y < H; y++) {
+            if (memcmp(band + (size_t)y * row, paint + (size_t)y * stride, row) != 0 && !bad++)
+                print_error("painter: scene %d format %d: row %d differs\n", n, (int)fmt, y);
+            for (size_t k = row; k < stride; k++)
+                guard += paint[(size_t)y * stride + k] != 0xCD;
+        }
+        differ += bad != 0;
+        /* the frame is done: rows and a second paint are refused */
+        ZT_ST(zs_paint_frame(&pc->r, paint, stride), ZS_ERR_STATE);
+        ZT_ST(zs_render_rows(&pc->r, 0, 1, band, row), ZS_ERR_STATE);
+    }
+    printf("test_priority painter walk: %lu random scenes (6 byte formats, %lu Gouraud; half "
+           "painted by a renderer with an edge pool of 2), %lu painted frames differ from the priority band image, %lu bytes written past the "
+           "row; %.2f pixel writes per pixel (background included)\n",
+           frames, gouraud, differ, guard, (double)writes / (double)(frames * W * H));
+    ZT_CHECK(differ == 0 && guard == 0, "painter: %lu frames differ, %lu guard bytes", differ,
+             guard);
+    zt_scene_free(&sc);
+    zt_ctx_free(&c);
+    zt_ctx_free(&small);
+}
+
+/* Textured records through the painter: the texture planes are made per
+ * record in the same active slot, so the image must still be the band's. */
+static void test_painter_textured(void **state)
+{
+    (void)state;
+    zt_rng g;
+    zt_rng_seed(&g, SEED + 6);
+    zt_ctx c;
+    memset(&c, 0, sizeof c);
+    c.cfg = zs_config_default(W, H, 600, 1800, 600);
+    c.cfg.flags = ZS_CFG_TEXTURE;
+    c.arena_size = zs_arena_bytes(&c.cfg);
+    c.arena = malloc(c.arena_size);
+    ZT_ST(zs_init(&c.r, c.arena, c.arena_size, &c.cfg), ZS_OK);
+    zs_camera cam;
+    zt_camera_std(&cam, ZS_FX(1) / 2, ZS_FX(100));
+    static uint16_t texels[64 * 64];
+    for (int k = 0; k < 64 * 64; k++)
+        texels[k] = (uint16_t)zt_u32(&g);
+    zt_scene sc;
+    zt_scene_init(&sc, W, H, 128);
+    static uint8_t band[W * H * 3], paint[W * H * 3];
+    unsigned long differ = 0;
+    const int nscenes = 96;
+    for (int n = 0; n < nscenes; n++) {
+        zt_scene_reset(&sc);
+        zt_scene_random(&g, &sc, (int)zt_range(&g, 6, 40), ZT_SC_ALL, 0.5);
+        int16_t *uv = malloc(2 * sc.nv * sizeof *uv + 1);
+        int spread = 1 + (int)zt_below(&g, 12);
+        for (size_t k = 0; k < 2 * sc.nv; k++)
+            uv[k] = (int16_t)zt_range(&g, -spread * ZS_UV_ONE / 4, spread * ZS_UV_ONE / 4);
+        zs_texture tex;
+        memset(&tex, 0, sizeof tex);
+        tex.texels = texels;
+        tex.width = 64;
+        tex.height = 64;
+        tex.format = ZS_TEX_RGB565;
+        tex.flags = (uint8_t)(n % 8); /* clamp, bilinear, subdivided: every mix */
+        zs_mesh mesh = zt_scene_mesh(&sc, n % 2, (n / 2) % 2);
+        mesh.uvs = uv;
+        mesh.texture = &tex;
+        zs_shade_params sp = zs_shade_default();
+        sp.format = n % 3 == 0 ? ZS_FMT_RGB888 : n % 3 == 1 ? ZS_FMT_RGB565_BE : ZS_FMT_GRAY8;
+        sp.shading = (n / 4) % 2 ? ZS_SHADE_GOURAUD : ZS_SHADE_FLAT;
+        size_t bytes = (size_t)W * H * zs_format_bytes(sp.format);
+        ZT_ST(zt_frame(&c, &cam, ZS_MODE_PRIORITY, &sp, &mesh, 1, NULL, band, 1 + n % 7), ZS_OK);
+        ZT_ST(zs_frame_begin(&c.r, &cam, ZS_MODE_PRIORITY), ZS_OK);
+        ZT_ST(zs_frame_shading(&c.r, &sp), ZS_OK);
+        ZT_ST(zs_draw(&c.r, &mesh, NULL), ZS_OK);
+        ZT_ST(zs_paint_frame(&c.r, paint, W * zs_format_bytes(sp.format)), ZS_OK);
+        long d = zt_first_diff(band, paint, bytes);
+        if (d >= 0 && differ++ < 3)
+            print_error("painter textured: scene %d (flags %u) differs at pixel %ld\n", n,
+                        tex.flags, d / (long)zs_format_bytes(sp.format));
+        free(uv);
+    }
+    printf("test_priority painter textured: %d random textured scenes (nearest, bilinear, "
+           "subdivided, wrap and clamp), %lu painted frames differ from the band image\n",
+           nscenes, differ);
+    ZT_CHECK(differ == 0, "%lu textured frames differ", differ);
+    zt_scene_free(&sc);
+    free(c.arena);
+}
+
+static void test_painter_errors(void **state)
+{
+    (void)state;
+    zt_ctx c;
+    zt_ctx_init(&c, 32, 24, 16, 48, 16);
+    zs_camera cam;
+    zt_camera_std(&cam, ZS_FX(1) / 2, ZS_FX(100));
+    zs_mesh pair = zt_mesh_pair();
+    static uint8_t buf[32 * 24 * 3];
+    uint16_t order[4];
+    uint32_t n = 99;
+    zs_record_tri rt;
+    ZT_ST(zs_paint_frame(NULL, buf, 64), ZS_ERR_NULL);
+    ZT_ST(zs_paint_frame(&c.r, NULL, 64), ZS_ERR_NULL);
+    ZT_ST(zs_paint_frame(&c.r, buf, 64), ZS_ERR_STATE); /* no frame begun */
+    ZT_ST(zs_priority_order(&c.r, order, 4, &n), ZS_ERR_STATE);
+    ZT_ST(zs_record_get(&c.r, 0, &rt), ZS_ERR_STATE);
+    ZT_ST(zs_frame_begin(&c.r, &cam, ZS_MODE_SPAN), ZS_OK);
+    ZT_ST(zs_paint_frame(&c.r, buf, 64), ZS_ERR_MODE);
+    ZT_ST(zs_frame_begin(&c.r, &cam, ZS_MODE_PRIORITY), ZS_OK);
+    zs_shade_params ids = zs_shade_default();
+    ids.format = ZS_FMT_ID16;
+    ZT_ST(zs_frame_shading(&c.r, &ids), ZS_OK);
+    ZT_ST(zs_draw(&c.r, &pair, NULL), ZS_OK);
+    ZT_CHECK(c.r.stats.records >= 2, "the pair stored %u records", c.r.stats.records);
+    ZT_ST(zs_paint_frame(&c.r, buf, 63), ZS_ERR_BUFFER); /* ID16: 64 bytes a row */
+    ZT_ST(zs_paint_frame(&c.r, buf, SIZE_MAX / 8), ZS_ERR_BUFFER);
+    ZT_ST(zs_priority_order(&c.r, NULL, 0, NULL), ZS_ERR_NULL);
+    ZT_ST(zs_priority_order(&c.r, NULL, 0, &n), ZS_ERR_CAPACITY);
+    ZT_CHECK(n == c.r.stats.records, "count %u of %u records", n, c.r.stats.records);
+    order[0] = 0x7777;
+    ZT_ST(zs_priority_order(&c.r, order, n - 1, &n), ZS_ERR_CAPACITY);
+    ZT_CHECK(order[0] == 0x7777, "a refused list wrote into the array");
+    ZT_ST(zs_priority_order(&c.r, order, 4, &n), ZS_OK);
+    for (uint32_t k = 0; k < n; k++)
+        ZT_CHECK(order[k] == n - 1 - k, "order[%u] = %u", k, order[k]);
+    ZT_ST(zs_record_get(&c.r, n, &rt), ZS_ERR_ARGUMENT);
+    ZT_ST(zs_record_get(&c.r, 0, NULL), ZS_ERR_NULL);
+    ZT_ST(zs_record_get(&c.r, 0, &rt), ZS_OK);
+    ZT_CHECK(rt.rgb[0] == 1 && zt_area2((const int32_t[6]){rt.x[0], rt.y[0], rt.x[1], rt.y[1],
+                                                            rt.x[2], rt.y[2]}) != 0,
+             "record 0: tag %u", rt.rgb[0]);
+    ZT_ST(zs_paint_frame(&c.r, buf, 64), ZS_OK);
+    ZT_ST(zs_priority_order(&c.r, order, 4, &n), ZS_OK); /* still readable after */
+    zt_ctx_free(&c);
+    /* the 1-bit formats are dithered rows, not painted; the A-buffer resolves rows */
+    zt_ctx d;
+    memset(&d, 0, sizeof d);
+    d.cfg = zs_config_default(32, 24, 16, 48, 16);
+    d.cfg.flags = ZS_CFG_MONO;
+    d.arena_size = zs_arena_bytes(&d.cfg);
+    d.arena = malloc(d.arena_size);
+    ZT_ST(zs_init(&d.r, d.arena, d.arena_size, &d.cfg), ZS_OK);
+    zs_shade_params sp = zs_shade_default();
+    sp.format = ZS_FMT_MONO_MSB;
+    ZT_ST(zs_frame_begin(&d.r, &cam, ZS_MODE_PRIORITY), ZS_OK);
+    ZT_ST(zs_frame_shading(&d.r, &sp), ZS_OK);
+    ZT_ST(zs_paint_frame(&d.r, buf, 64), ZS_ERR_FORMAT);
+    free(d.arena);
 }
 
 /* ---------------- BSP order against span mode ---------------- */
@@ -179,7 +386,7 @@ static zs_mesh mesh_of(const mesh_buf *m, int16_t *pos, uint16_t *idx, uint32_t 
 
 typedef struct bsp_tally {
     unsigned long scenes, views, tris, out_tris, nodes, splits, slivers, pixels, covered,
-        differ, in_bound, outside, cracks, mask, edge_on, near_tie;
+        differ, in_bound, outside, cracks, mask, edge_on, near_tie, painted, paint_differ;
     double max_r;
 } bsp_tally;
 
@@ -263,6 +470,20 @@ static void compare_view(zt_ctx *c, const zs_camera *cam, const zs_mesh *src, co
     ZT_CHECK(c->r.stats.bsp_nodes == res->node_count, "%s: %u nodes visited of %zu", what,
              c->r.stats.bsp_nodes, res->node_count);
     zs_set_setup_hook(&c->r, NULL, NULL);
+    /* the same tree painted back to front into a full frame */
+    {
+        static uint8_t paint_img[W * H * 3];
+        memset(paint_img, 0x5A, sizeof paint_img);
+        ZT_ST(zs_frame_begin(&c->r, cam, ZS_MODE_PRIORITY), ZS_OK);
+        ZT_ST(zs_frame_shading(&c->r, &sp), ZS_OK);
+        ZT_ST(zs_draw_bsp(&c->r, bsp, NULL), ZS_OK);
+        ZT_ST(zs_paint_frame(&c->r, paint_img, W * 3), ZS_OK);
+        t->painted++;
+        long d = zt_first_diff(pri_img, paint_img, sizeof paint_img);
+        if (d >= 0 && t->paint_differ++ < 3)
+            print_error("%s view %d: painter differs from the band image at pixel (%ld,%ld)\n",
+                        what, view, d / 3 % W, d / 3 / W);
+    }
     /* the bound around every record with a split vertex */
     memset(mask, 0, sizeof mask);
     double near = cam->near_z / 65536.0, far = cam->far_z / 65536.0, focal = H / 2.0;
@@ -359,6 +580,10 @@ static void run_scene(zt_ctx *c, mesh_buf *m, int div, const double (*views)[6],
 {
     zs_bspb_result res;
     build_bsp(m, &res, what);
+    if (res.split_weight != 8)
+        printf("test_priority bsp %s: built with split weight %d (with 8 the walk would need "
+               "more than ZS_BSP_MAX_STACK), walk stack %d\n",
+               what, res.split_weight, res.stack);
     zs_fixed scale = ZS_FX(1) / div;
     zs_mesh src = mesh_of(m, m->pos, m->idx, m->fcol, m->nv, m->nt, scale);
     zs_mesh out = mesh_of(m, res.mesh.pos, res.mesh.idx, res.mesh.fcol, res.mesh.nv, res.mesh.nt,
@@ -386,10 +611,11 @@ static void report(const char *what, const bsp_tally *t)
            "(largest R %.2f px, %lu pixels in it), %lu outside; %lu cracks; %lu pixels of "
            "triangles span mode drew although they face away from the exact eye (edge-on, "
            "turned by rounding: pruned by the BSP), %lu where span mode's two nearest "
-           "depths are within 2^-12 (touching surfaces)\n",
+           "depths are within 2^-12 (touching surfaces); painter's full frame: %lu of %lu "
+           "views differ from the band image\n",
            what, t->scenes, t->views, t->tris, t->out_tris, t->splits, t->slivers, t->nodes,
            t->pixels, t->covered, t->differ, t->in_bound, t->max_r, t->mask, t->outside,
-           t->cracks, t->edge_on, t->near_tie);
+           t->cracks, t->edge_on, t->near_tie, t->paint_differ, t->painted);
 }
 
 static void test_bsp_random(void **state)
@@ -447,6 +673,8 @@ static void test_bsp_random(void **state)
     report("plates", &plates);
     ZT_CHECK(boxes.outside == 0 && plates.outside == 0, "pixels outside the bound");
     ZT_CHECK(boxes.cracks == 0 && plates.cracks == 0, "cracks");
+    ZT_CHECK(boxes.paint_differ == 0 && plates.paint_differ == 0 && boxes.painted == boxes.views,
+             "painter's image differs from the band image");
     ZT_CHECK(plates.splits > 0, "the plates made no split: the test would not test splitting");
     zt_ctx_free(&c);
 }
@@ -492,6 +720,7 @@ static void test_bsp_room(void **state)
     report("room", &t);
     ZT_CHECK(t.outside == 0, "room: pixels outside the bound");
     ZT_CHECK(t.cracks == 0, "room: cracks");
+    ZT_CHECK(t.paint_differ == 0, "room: painter differs from the band image");
     free(m.pos);
     free(m.idx);
     free(m.fcol);
@@ -552,6 +781,8 @@ static void test_bsp_models(void **state)
         "/usr/share/assimp/models/OBJ/box.obj",
         "/usr/share/assimp/models/OBJ/spider.obj",
         "/usr/share/assimp/models/PLY/cube.ply",
+        "/usr/share/assimp/models/Collada/duck.dae",
+        "/usr/share/assimp/models/OBJ/WusonOBJ.obj",
     };
     zt_ctx c;
     zt_ctx_init(&c, W, H, 20000, 40000, 4096);
@@ -571,6 +802,7 @@ static void test_bsp_models(void **state)
         report(strrchr(models[k], '/') + 1, &t);
         ZT_CHECK(t.outside == 0, "%s: pixels outside the bound", models[k]);
         ZT_CHECK(t.cracks == 0, "%s: cracks", models[k]);
+        ZT_CHECK(t.paint_differ == 0, "%s: painter differs from the band image", models[k]);
         free(m.pos);
         free(m.idx);
         free(m.fcol);
@@ -639,7 +871,62 @@ static void add_penetrating(zt_rng *g, zt_scene *sc)
 
 typedef struct nns_tally {
     unsigned long px, excluded, near_split, bad, scenes_wrong, pairs, swaps, splits, giveups;
+    unsigned long paint_differ, paint_bad, order_pairs, order_bad, order_scenes_wrong;
 } nns_tally;
+
+/* The ordered list against exact depths: for every two records of the list
+ * whose coverage shares a centre (away from cut edges and near ties), the
+ * one later in the list (painted over the other) must be the nearer there.
+ * Returns the violating pairs; counts the overlapping pairs in *pairs. */
+static unsigned long check_order(const zs_renderer *r, const uint8_t *mask, const zt_cast *cast,
+                                 unsigned long *pairs, int verbose)
+{
+    static uint16_t order[800];
+    static zt_rec rec[800];
+    uint32_t n = 0;
+    unsigned long bad = 0;
+    ZT_ST(zs_priority_order(r, order, 800, &n), ZS_OK);
+    for (uint32_t i = 0; i < n; i++) {
+        zs_record_tri rt;
+        ZT_ST(zs_record_get(r, order[i], &rt), ZS_OK);
+        rec[i].tag = (uint16_t)rt.rgb[0];
+        for (int k = 0; k < 3; k++) {
+            rec[i].xy[2 * k] = rt.x[k];
+            rec[i].xy[2 * k + 1] = rt.y[k];
+            rec[i].z[k] = rt.z[k];
+        }
+    }
+    for (uint32_t i = 0; i < n; i++) {
+        int ax0, ay0, ax1, ay1;
+        if (!zt_bbox(rec[i].xy, W, H, &ax0, &ay0, &ax1, &ay1))
+            continue;
+        for (uint32_t j = i + 1; j < n; j++) {
+            int bx0, by0, bx1, by1, overlap = 0, wrong = 0;
+            if (!zt_bbox(rec[j].xy, W, H, &bx0, &by0, &bx1, &by1))
+                continue;
+            for (int y = ay0 > by0 ? ay0 : by0; y <= (ay1 < by1 ? ay1 : by1); y++)
+                for (int x = ax0 > bx0 ? ax0 : bx0; x <= (ax1 < bx1 ? ax1 : bx1); x++) {
+                    int p = y * W + x;
+                    if (mask[p] || (cast->owner[p] && cast->z2[p] - cast->z1[p] < 1.0 / 1048576) ||
+                        !zt_covers(rec[i].xy, x, y) || !zt_covers(rec[j].xy, x, y))
+                        continue;
+                    overlap = 1;
+                    /* j is painted after i: it must not be the farther */
+                    if (zt_depth_at(&rec[j], x, y) > zt_depth_at(&rec[i], x, y) + 1.0 / 1048576) {
+                        if (!wrong && verbose)
+                            printf("order: records %u (list %u) over %u (list %u) at (%d,%d): "
+                                   "%.9f behind %.9f, %u records, top %u\n",
+                                   order[j], j, order[i], i, x, y, zt_depth_at(&rec[j], x, y),
+                                   zt_depth_at(&rec[i], x, y), n, cast->owner[p]);
+                        wrong = 1;
+                    }
+                }
+            *pairs += (unsigned long)overlap;
+            bad += (unsigned long)wrong;
+        }
+    }
+    return bad;
+}
 
 static void run_sorted(zt_ctx *c, const zs_camera *cam, const zs_mesh *mesh, zs_sort_kind kind,
                        nns_tally *t, int scene)
@@ -692,6 +979,26 @@ static void run_sorted(zt_ctx *c, const zs_camera *cam, const zs_mesh *mesh, zs_
     }
     t->bad += bad;
     t->scenes_wrong += bad > 0;
+    /* the ordered list, pair by pair */
+    unsigned long obad = check_order(&c->r, mask, &cast, &t->order_pairs,
+                                    kind == ZS_SORT_NNS && getenv("ZT_ORDER_DEBUG"));
+    t->order_bad += obad;
+    t->order_scenes_wrong += obad > 0;
+    /* the same frame painted into a full frame buffer */
+    static uint8_t paint_img[W * H * 2];
+    memset(paint_img, 0x5A, sizeof paint_img);
+    ZT_ST(zs_frame_begin(&c->r, cam, ZS_MODE_PRIORITY), ZS_OK);
+    ZT_ST(zs_frame_shading(&c->r, &sp), ZS_OK);
+    ZT_ST(zs_draw(&c->r, mesh, NULL), ZS_OK);
+    ZT_ST(zs_depth_sort(&c->r, kind, 0), ZS_OK);
+    ZT_ST(zs_paint_frame(&c->r, paint_img, W * 2), ZS_OK);
+    t->paint_differ += zt_first_diff(img, paint_img, sizeof img) >= 0;
+    for (int p = 0; p < W * H; p++) {
+        uint16_t want = cast.owner[p];
+        if ((want && cast.z2[p] - cast.z1[p] < 1.0 / 1048576) || mask[p])
+            continue;
+        t->paint_bad += zt_id_at(paint_img, W, p % W, p / W) != want;
+    }
     zt_recs_free(&draw);
     zt_recs_free(&pieces);
 }
@@ -736,7 +1043,21 @@ static void test_nns(void **state)
            "excluded); plain sort: %lu pixels wrong in %lu of %d scenes\n",
            nscenes, nns.px, nns.pairs, nns.swaps, nns.splits, nns.giveups, nns.bad,
            nns.excluded, nns.near_split, plain.bad, plain.scenes_wrong, nscenes);
+    printf("test_priority painter: NNS scenes painted into a full frame: %lu of %d differ from "
+           "the band image, %lu pixels from the ray caster; ordered list: %lu overlapping "
+           "record pairs, %lu in the wrong order (plain sort: %lu of %lu pairs wrong, in %lu "
+           "of %d scenes; its painted frames %lu differ from its band images)\n",
+           nns.paint_differ, nscenes, nns.paint_bad, nns.order_pairs, nns.order_bad,
+           plain.order_bad, plain.order_pairs, plain.order_scenes_wrong, nscenes,
+           plain.paint_differ);
     ZT_CHECK(nns.bad == 0, "NNS order: %lu pixels differ from the ray caster", nns.bad);
+    ZT_CHECK(nns.paint_differ == 0 && plain.paint_differ == 0 && nns.paint_bad == 0,
+             "painter: %lu + %lu frames differ from the band image, %lu pixels from the ray "
+             "caster", nns.paint_differ, plain.paint_differ, nns.paint_bad);
+    ZT_CHECK(nns.order_bad == 0 && nns.order_pairs > 0, "ordered list: %lu pairs wrong",
+             nns.order_bad);
+    ZT_CHECK(plain.order_scenes_wrong * 2 > (unsigned long)nscenes,
+             "the plain sort's list was wrong in only %lu scenes", plain.order_scenes_wrong);
     ZT_CHECK(nns.splits > 0, "no split: the scenes would not test cycles");
     ZT_CHECK(plain.scenes_wrong * 2 > (unsigned long)nscenes,
              "the plain sort was wrong in only %lu of %d scenes", plain.scenes_wrong, nscenes);
@@ -859,6 +1180,8 @@ int main(void)
         cmocka_unit_test(test_walk_oracle), cmocka_unit_test(test_bsp_random),
         cmocka_unit_test(test_bsp_room),    cmocka_unit_test(test_bsp_models),
         cmocka_unit_test(test_nns),         cmocka_unit_test(test_bad_trees),
+        cmocka_unit_test(test_painter_walk), cmocka_unit_test(test_painter_errors),
+        cmocka_unit_test(test_painter_textured),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     fflush(stdout);

@@ -8,6 +8,10 @@
  * a few objects, and a camera. Then: zs_bsp_check and zs_draw_bsp in
  * ZS_MODE_PRIORITY; zs_cells_check and zs_draw_cells; the mesh drawn again
  * and zs_depth_sort (NNS or plain, a small budget); every frame rendered.
+ * The sorted frame is made twice: rendered in rows and painted back to front
+ * (zs_paint_frame), and the two images must be equal byte for byte, the
+ * painter writing nothing past a row; zs_priority_order must give every
+ * record once, back to front, and zs_record_get each of them.
  *
  * Invariants: the checks give ZS_OK or ZS_ERR_BSP (ZS_ERR_NULL never, as
  * nothing is NULL); a draw of a refused tree or scene gives the same error
@@ -38,6 +42,12 @@ static void render(zs_renderer *r)
         FZ_CHECK(zs_render_rows(r, y, 1, row, sizeof row) == ZS_OK, "row %d", y);
 }
 
+/* The frame's rows into img (FH rows of FW * 2 bytes). */
+static void render_full(zs_renderer *r, uint8_t *img)
+{
+    FZ_CHECK(zs_render_rows(r, 0, FH, img, FW * 2) == ZS_OK, "rows");
+}
+
 static void check_stats(const zs_stats *s)
 {
     FZ_CHECK(s->tris_submitted ==
@@ -60,8 +70,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     zs_mesh mesh;
     zs_bsp bsp;
     zs_cells sc;
+    static uint8_t rows_img[FW * 2 * FH], paint_img[(FW * 2 + 3) * FH], seen[400];
+    static uint16_t order[400];
     zs_status chk, st;
-    uint32_t nv, nt, nn, nc, k, budget;
+    zs_sort_kind kind;
+    uint32_t nv, nt, nn, nc, k, budget, count = 0, skipped = 0;
+    int pass, y;
     fz_init(&d, data, size);
     cfg.flags = ZS_CFG_PRIORITY;
     if (zs_init(&r, arena, sizeof arena, &cfg) != ZS_OK)
@@ -156,17 +170,44 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 
     /* the depth sort on the mesh, twice over */
     budget = 1 + fz_u8(&d) * 8u;
-    FZ_CHECK(zs_frame_begin(&r, &cam, ZS_MODE_PRIORITY) == ZS_OK, "frame_begin");
-    st = zs_draw(&r, &mesh, NULL);
-    if (st == ZS_OK)
+    kind = (fz_u8(&d) & 1) ? ZS_SORT_NNS : ZS_SORT_DEPTH;
+    for (pass = 0; pass < 2; pass++) { /* rows, then painted */
+        FZ_CHECK(zs_frame_begin(&r, &cam, ZS_MODE_PRIORITY) == ZS_OK, "frame_begin");
         st = zs_draw(&r, &mesh, NULL);
-    if (st == ZS_OK) {
-        st = zs_depth_sort(&r, (fz_u8(&d) & 1) ? ZS_SORT_NNS : ZS_SORT_DEPTH, budget);
+        if (st == ZS_OK)
+            st = zs_draw(&r, &mesh, NULL);
+        if (st != ZS_OK)
+            return 0;
+        st = zs_depth_sort(&r, kind, budget);
         FZ_CHECK(st == ZS_OK, "depth sort gave %d", (int)st);
         FZ_CHECK(r.stats.sort_pairs <= budget, "past the budget");
         FZ_CHECK(r.priv.n_tris <= cfg.max_triangles && r.priv.n_verts <= cfg.max_vertices,
                  "pools overrun");
-        render(&r);
+        if (pass == 0) {
+            render_full(&r, rows_img);
+            skipped = r.stats.records_skipped;
+            continue;
+        }
+        FZ_CHECK(zs_priority_order(&r, order, 400, &count) == ZS_OK && count == r.priv.n_tris,
+                 "order of %u records", count);
+        memset(seen, 0, sizeof seen);
+        for (k = 0; k < count; k++) {
+            zs_record_tri rt;
+            FZ_CHECK(order[k] < count && !seen[order[k]], "record %u twice or out of range",
+                     order[k]);
+            FZ_CHECK(k == 0 || order[k] < order[k - 1], "not back to front");
+            seen[order[k]] = 1;
+            FZ_CHECK(zs_record_get(&r, order[k], &rt) == ZS_OK, "record_get %u", order[k]);
+        }
+        memset(paint_img, 0xEE, sizeof paint_img);
+        FZ_CHECK(zs_paint_frame(&r, paint_img, FW * 2 + 3) == ZS_OK, "paint");
+        for (y = 0; y < FH; y++) {
+            /* the walk skips records its full active pool cannot take; the painter does not */
+            FZ_CHECK(skipped || !memcmp(paint_img + y * (FW * 2 + 3), rows_img + y * FW * 2, FW * 2),
+                     "painted row %d differs from the rendered one", y);
+            for (k = FW * 2; k < FW * 2 + 3; k++)
+                FZ_CHECK(paint_img[y * (FW * 2 + 3) + (int)k] == 0xEE, "painted past row %d", y);
+        }
     }
     return 0;
 }

@@ -603,6 +603,74 @@ static void test_binary_mesh(void **state)
 
 /* ---- messages ---------------------------------------------------------- */
 
+/* --painter: each order painted back to front into the whole image gives the
+ * band image (the same PNG) and reports its overdraw; it needs priority mode. */
+static void test_painter(void **state)
+{
+    static const char *const orders[] = {"bsp", "nns", "sort"};
+    char out[2][1024];
+    run_result r;
+    int k, p;
+    (void)state;
+    for (k = 0; k < 3; k++) {
+        image img[2];
+        for (p = 0; p < 2; p++) {
+            snprintf(out[p], sizeof out[p], "%s/painter_%s_%d.png", g_dir, orders[k], p);
+            run(&r, "'%s' render '%s/OBJ/WusonOBJ.obj' --size 96x72 --shade gouraud --mode "
+                    "priority --order %s %s --out '%s'",
+                SIM, ASSIMP_MODELS, orders[k], p ? "--painter" : "", out[p]);
+            STATUS(&r, 0);
+            if (p)
+                CONTAINS(&r, "painter: ");
+            else
+                LACKS(&r, "painter: ");
+            assert_int_equal(read_png(out[p], &img[p]), 0);
+        }
+        assert_true(covered(&img[0]) > 500);
+        assert_true(same_image(&img[0], &img[1]));
+        free_image(&img[0]);
+        free_image(&img[1]);
+    }
+    run(&r, "'%s' render '%s/OBJ/WusonOBJ.obj' --size 32x24 --painter --out '%s/x.png'", SIM,
+        ASSIMP_MODELS, g_dir);
+    STATUS(&r, 2);
+    CONTAINS(&r, "--painter need --mode priority");
+}
+
+/* --cells kd|grid: the 55 chunks of regr01.obj as scene cells; part of them
+ * outside the view is never transformed, and the image is the one without. */
+static void test_cells(void **state)
+{
+    static const char *const kinds[] = {"", "--cells kd", "--cells grid"};
+    image img[3];
+    run_result r;
+    char out[1024];
+    int k;
+    (void)state;
+    for (k = 0; k < 3; k++) {
+        snprintf(out, sizeof out, "%s/cells_%d.png", g_dir, k);
+        run(&r, "'%s' render '%s/OBJ/regr01.obj' --fit --eye 0.3,0.2,0.6 --target 0.5,0,0 "
+                "--size 120x90 %s --out '%s'",
+            SIM, ASSIMP_MODELS, kinds[k], out);
+        STATUS(&r, 0);
+        if (k) {
+            CONTAINS(&r, "cells: 55 chunks in ");
+            CONTAINS(&r, "1836 triangles and 1159 vertices never transformed");
+        }
+        assert_int_equal(read_png(out, &img[k]), 0);
+    }
+    assert_true(covered(&img[0]) > 1000);
+    assert_true(same_image(&img[0], &img[1]));
+    assert_true(same_image(&img[0], &img[2]));
+    for (k = 0; k < 3; k++)
+        free_image(&img[k]);
+    run(&r, "'%s' render '%s/OBJ/regr01.obj' --cells kd --mode priority --order bsp --out "
+            "'%s/x.png'",
+        SIM, ASSIMP_MODELS, g_dir);
+    STATUS(&r, 2);
+    CONTAINS(&r, "--cells: not with --order bsp");
+}
+
 static void test_messages(void **state)
 {
     static const struct {
@@ -683,6 +751,7 @@ int main(void)
         cmocka_unit_test(test_winding_options), cmocka_unit_test(test_normals_warning),
         cmocka_unit_test(test_up_axis),         cmocka_unit_test(test_big_model),
         cmocka_unit_test(test_binary_mesh),     cmocka_unit_test(test_messages),
+        cmocka_unit_test(test_painter),         cmocka_unit_test(test_cells),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

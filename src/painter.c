@@ -55,6 +55,7 @@ zs_status zs_paint_frame(zs_renderer *r, void *buf, size_t stride)
     int32_t width;
     uint8_t *const img = (uint8_t *)buf;
     zs_active *a;
+    zs_active_plane plane; /* made by zs_rec_planes, never read: no depth here */
     zs_active_color *ac;
     size_t need;
     uint32_t background, writes;
@@ -88,7 +89,7 @@ zs_status zs_paint_frame(zs_renderer *r, void *buf, size_t stride)
         if (v.row0 >= end)
             continue;
         /* the planes refer to the row the walk activates the record on */
-        zs_rec_planes(r, k, &v, v.row0, &a[0], ac ? &ac[0] : 0, 1);
+        zs_rec_planes(r, k, &v, v.row0, &a[0], &plane, ac ? &ac[0] : 0, 1);
         {
             /* the long edge and the short chain, the short one switching to
              * s1 -> s2 at the first centre row at or below s1 */

@@ -214,7 +214,7 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     zs_active *a;
     int64_t cross;
     zs_recip area2;
-    int long_left;
+    int long_left, plane_made = 0; /* area2 holds the area's reciprocal */
     if (r->priv.n_active_free < 1 || r->priv.n_edge_free < 2) {
         r->stats.records_skipped++; /* capacity policy: the triangle is skipped */
         return 0;
@@ -245,6 +245,7 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
         a->flags |= ZS_ACT_LAZY;
     } else if (r->priv.mode != ZS_MODE_PRIORITY) { /* priority: decided by record order */
         zs_active_plane *pl = &r->priv.aplane[ai];
+        plane_made = 1;
         zs_recip_init(&area2, cross);
         /* the depth plane from the canonical order: equal triangles, equal planes */
         depth_plane(a, pl, s, &area2, zs_asr32(s[0]->x, 4), zs_asr32(s[0]->y, 4), y);
@@ -258,11 +259,11 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     }
     /* colours in submission order (per-vertex shades follow t->v); the
      * record's area is negative in that order (a front face). Only colour
-     * planes need the area's reciprocal here in span mode. */
+     * planes need the area's reciprocal here where no plane was made. */
     v[0] = &pool[t->v[0]];
     v[1] = &pool[t->v[1]];
     v[2] = &pool[t->v[2]];
-    if ((a->flags & ZS_ACT_LAZY) && (t->color >> 24) != 0 && r->priv.vshade)
+    if (!plane_made && (t->color >> 24) != 0 && r->priv.vshade)
         zs_recip_init(&area2, cross);
     area2.neg = 1;
     zs_shade_setup(r, a, r->priv.acolor ? &r->priv.acolor[ai] : 0, t, v,

@@ -17,7 +17,8 @@
  * nothing is NULL); a draw of a refused tree or scene gives the same error
  * and submits nothing; a good tree's walk visits every node once; the
  * statistics add up; the sort keeps within the pools and its budget
- * (pairs resolved <= budget). ASan and UBSan
+ * (pairs resolved <= budget); a renderer without depth planes
+ * (ZS_CFG_PRIORITY_ONLY) gives the same sorted rows. ASan and UBSan
  * catch the rest; -timeout catches a walk or sort that does not end.
  */
 #include <stdint.h>
@@ -58,6 +59,11 @@ static void check_stats(const zs_stats *s)
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     static uint8_t arena[ZS_ARENA_BYTES_CFG(FW, FH, 400, 600, 256, ZS_CFG_PRIORITY)];
+    static uint8_t arena_po[ZS_ARENA_BYTES_CFG(FW, FH, 400, 600, 256,
+                                               ZS_CFG_PRIORITY | ZS_CFG_PRIORITY_ONLY)];
+    static uint8_t po_img[FW * 2 * FH];
+    zs_renderer rp; /* without depth planes (ZS_CFG_PRIORITY_ONLY) */
+    zs_config cfg_po;
     static int16_t pos[3 * NV];
     static uint16_t idx[3 * NT];
     static zs_bsp_node nodes[NN];
@@ -80,6 +86,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     cfg.flags = ZS_CFG_PRIORITY;
     if (zs_init(&r, arena, sizeof arena, &cfg) != ZS_OK)
         return 0;
+    cfg_po = cfg;
+    cfg_po.flags = ZS_CFG_PRIORITY | ZS_CFG_PRIORITY_ONLY;
+    FZ_CHECK(zs_init(&rp, arena_po, sizeof arena_po, &cfg_po) == ZS_OK, "priority-only init");
     nv = 3 + fz_u8(&d) % (NV - 2);
     nt = 1 + fz_u8(&d) % NT;
     for (k = 0; k < 3 * nv; k++)
@@ -186,6 +195,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (pass == 0) {
             render_full(&r, rows_img);
             skipped = r.stats.records_skipped;
+            /* the same frame without depth planes: the same rows; the
+             * other modes refused */
+            FZ_CHECK(zs_frame_begin(&rp, &cam, ZS_MODE_SPAN) == ZS_ERR_MODE, "span accepted");
+            FZ_CHECK(zs_frame_begin(&rp, &cam, ZS_MODE_PRIORITY) == ZS_OK, "frame_begin");
+            FZ_CHECK(zs_draw(&rp, &mesh, NULL) == ZS_OK && zs_draw(&rp, &mesh, NULL) == ZS_OK,
+                     "priority-only draws");
+            FZ_CHECK(zs_depth_sort(&rp, kind, budget) == ZS_OK, "priority-only sort");
+            FZ_CHECK(zs_render_rows(&rp, 0, FH, po_img, FW * 2) == ZS_OK, "priority-only rows");
+            FZ_CHECK(memcmp(po_img, rows_img, sizeof po_img) == 0,
+                     "priority-only rows differ from the full renderer's");
             continue;
         }
         FZ_CHECK(zs_priority_order(&r, order, 400, &count) == ZS_OK && count == r.priv.n_tris,

@@ -482,6 +482,107 @@ static void record_lines(const zs_renderer *r, const line_rows *c, uint16_t i, u
         }
     }
 }
+/* Where, between the centres of s (ids a at c0, b at c1, of two draws),
+ * the boundary between the draws lies, in 1/4096 of the step: where the
+ * nearer one's cover ends, or, where each covers both centres (they cut
+ * into each other), where their planes cross; -1 if the records are not
+ * found on the step. */
+static int32_t draw_cut(const zs_renderer *r, uint16_t a, uint16_t fa, uint16_t b, uint16_t fb,
+                        const step_pair *s)
+{
+    const zs_tri *t = r->priv.tris;
+    cover ca, cb;
+    int32_t ta, tb;
+    if (!tag_cover(r, fa, a, s, &ca) || !tag_cover(r, fb, b, s, &cb))
+        return -1;
+    ta = ca.hi;
+    tb = cb.lo;
+    if (ta >= STEP_ONE && tb <= 0) {
+        int64_t d0 = depth_at(r, &t[fa], s, 0) - depth_at(r, &t[fb], s, 0);
+        int64_t d1 = depth_at(r, &t[fa], s, STEP_ONE) - depth_at(r, &t[fb], s, STEP_ONE);
+        /* a is in front at c0 (d0 <= 0), b at c1 (d1 >= 0) */
+        if (d0 > 0 || d1 < 0 || d1 - d0 <= 0)
+            return STEP_ONE / 2;
+        return fraction((uint64_t)-d0, (uint64_t)(d1 - d0));
+    }
+    if (ta >= STEP_ONE) /* a reaches c1, b is in front there */
+        return tb;
+    if (tb <= 0) /* b reaches c0 */
+        return ta;
+    if (ta <= tb) /* a gap, covered by what no centre sees */
+        return (ta + tb) / 2;
+    return depth_at(r, &t[fa], s, (ta + tb) / 2) <= depth_at(r, &t[fb], s, (ta + tb) / 2) ? ta : tb;
+}
+
+/* The first record of a tag, the last one asked kept. */
+typedef struct tag_memo {
+    uint16_t tag, rec;
+} tag_memo;
+
+static uint16_t memo_record(const zs_renderer *r, tag_memo *m, uint16_t tag)
+{
+    if (m->tag != tag) {
+        m->tag = tag;
+        m->rec = first_record(r, tag);
+    }
+    return m->rec;
+}
+
+/* Boundaries between draw calls that no feature edge gives (a surface
+ * cutting into another, an object sunk into the floor): where neighbouring
+ * centres see two draws and neither pixel has a line yet, the line goes on
+ * the pixel nearer the boundary. */
+static void draw_boundaries(const zs_renderer *r, const line_rows *c)
+{
+    const int16_t *nrm = r->priv.tri_normal;
+    tag_memo ma, mb;
+    step_pair s;
+    int x;
+    ma.tag = mb.tag = 0;
+    ma.rec = mb.rec = 0;
+    s.py = 16 * c->y + 8;
+    s.sx = 16;
+    s.sy = 0;
+    for (x = 1; x < c->w; x++) {
+        uint16_t a = c->cur[x - 1], b = c->cur[x], fa, fb;
+        int32_t cut;
+        if (a == b || !a || !b || c->flags[x - 1] || c->flags[x])
+            continue;
+        fa = memo_record(r, &ma, a);
+        fb = memo_record(r, &mb, b);
+        if (fa >= r->priv.n_tris || fb >= r->priv.n_tris ||
+            nrm[4u * fa + 3u] == nrm[4u * fb + 3u])
+            continue;
+        s.px = 16 * x - 8;
+        cut = draw_cut(r, a, fa, b, fb, &s);
+        if (cut >= 0)
+            c->flags[cut < STEP_ONE / 2 ? x - 1 : x] = 1;
+    }
+    if (!c->below)
+        return;
+    s.sx = 0;
+    s.sy = 16;
+    for (x = 0; x < c->w; x++) {
+        uint16_t a = c->cur[x], b = c->below[x], fa, fb;
+        int32_t cut;
+        if (a == b || !a || !b || c->flags[x] || c->pending[x])
+            continue;
+        fa = memo_record(r, &ma, a);
+        fb = memo_record(r, &mb, b);
+        if (fa >= r->priv.n_tris || fb >= r->priv.n_tris ||
+            nrm[4u * fa + 3u] == nrm[4u * fb + 3u])
+            continue;
+        s.px = 16 * x + 8;
+        cut = draw_cut(r, a, fa, b, fb, &s);
+        if (cut >= 0) {
+            if (cut < STEP_ONE / 2)
+                c->flags[x] = 1;
+            else
+                c->pending[x] = 1;
+        }
+    }
+}
+
 /* A record's top and bottom rows, 1/16 px. */
 static int32_t rec_top(const zs_renderer *r, uint16_t i)
 {
@@ -626,6 +727,10 @@ void zs_lines_row(zs_renderer *r, int y, uint8_t *flags)
         record_lines(r, &c, i, mask[i]);
         j++;
     }
+    /* more than one draw: the first and last records' draw numbers differ */
+    if (r->priv.n_tris > 1 &&
+        r->priv.tri_normal[3] != r->priv.tri_normal[4u * (r->priv.n_tris - 1u) + 3u])
+        draw_boundaries(r, &c);
     if (!c.below) {
         r->priv.line_next = y + 1;
         return;

@@ -120,23 +120,6 @@ static uint16_t first_record(const zs_renderer *r, uint16_t tag)
     return (uint16_t)lo;
 }
 
-/* Window depth (Q2.30) of record t's plane at (px, py) in 1/16 px. The
- * depth differences lose their 6 low bits so that every product fits 63
- * bits (|dx|, |dy| < 2^16); the plane is only compared within 1/64 here. */
-static int64_t plane_depth(const zs_renderer *r, const zs_tri *t, int32_t px, int32_t py)
-{
-    const zs_vert *a = &r->priv.verts[t->v[0]], *b = &r->priv.verts[t->v[1]],
-                  *c = &r->priv.verts[t->v[2]];
-    int64_t dx1 = b->x - a->x, dy1 = b->y - a->y, dx2 = c->x - a->x, dy2 = c->y - a->y;
-    int64_t dz1 = zs_asr64((int64_t)b->z - (int64_t)a->z, 6);
-    int64_t dz2 = zs_asr64((int64_t)c->z - (int64_t)a->z, 6);
-    int64_t den = dx1 * dy2 - dx2 * dy1;
-    int64_t num = (dz1 * dy2 - dz2 * dy1) * (px - a->x) + (dz2 * dx1 - dz1 * dx2) * (py - a->y);
-    if (den == 0)
-        return a->z;
-    return (int64_t)a->z + (num / den) * 64;
-}
-
 /* Positions along the step from one pixel centre to its neighbour's, in
  * 1/4096 of the step. */
 #define STEP_ONE 4096
@@ -253,13 +236,24 @@ static int tag_cover(const zs_renderer *r, uint16_t first, uint16_t tag, const s
     return any;
 }
 
-/* Depth of record t's plane at m (1/4096 of the step): window depth is
- * affine on the screen, so the two centres' depths interpolate it. */
+/* Window depth (Q2.30) of record t's plane at m (1/4096 of the step s).
+ * The depth differences lose their 6 low bits so that every product fits
+ * 63 bits (|dx|, |dy| < 2^16); the plane is only compared within 1/256 of
+ * A - z here. */
 static int64_t depth_at(const zs_renderer *r, const zs_tri *t, const step_pair *s, int32_t m)
 {
-    int64_t z0 = plane_depth(r, t, s->px, s->py);
-    int64_t z1 = plane_depth(r, t, s->px + s->sx, s->py + s->sy);
-    return z0 + zs_asr64((z1 - z0) * m, 12);
+    const zs_vert *a = &r->priv.verts[t->v[0]], *b = &r->priv.verts[t->v[1]],
+                  *c = &r->priv.verts[t->v[2]];
+    int64_t dx1 = b->x - a->x, dy1 = b->y - a->y, dx2 = c->x - a->x, dy2 = c->y - a->y;
+    int64_t dz1 = zs_asr64((int64_t)b->z - (int64_t)a->z, 6);
+    int64_t dz2 = zs_asr64((int64_t)c->z - (int64_t)a->z, 6);
+    int64_t den = dx1 * dy2 - dx2 * dy1;
+    int64_t gx = dz1 * dy2 - dz2 * dy1, gy = dz2 * dx1 - dz1 * dx2;
+    int64_t num = gx * (s->px - a->x) + gy * (s->py - a->y) +
+                  zs_asr64((gx * s->sx + gy * s->sy) * m, 12);
+    if (den == 0)
+        return a->z;
+    return (int64_t)a->z + (num / den) * 64;
 }
 
 /* Do records a and b meet at m? Their depths agree to 1/64 of A - z
@@ -306,6 +300,58 @@ static int holds_edge(const zs_renderer *r, uint16_t first, uint16_t tag, uint16
     return 0;
 }
 
+/* The first records of the last tags asked, by the tag's low bits (ids
+ * repeat along an edge and along a row). */
+#define MEMO_SIZE 16u
+typedef struct tag_memo {
+    uint16_t tag, rec;
+} tag_memo;
+
+static uint16_t record_of(const zs_renderer *r, tag_memo *memo, uint16_t tag)
+{
+    tag_memo *m = &memo[tag & (MEMO_SIZE - 1u)];
+    if (m->tag != tag) {
+        m->tag = tag;
+        m->rec = first_record(r, tag);
+    }
+    return m->rec;
+}
+
+/* Does a record tagged tag (from first on) cover the point at m (1/4096
+ * of the step s), edges included? Edge functions are linear along the
+ * step, so 4096 times one at the point is exact in 64 bits. */
+static int covers_point(const zs_renderer *r, uint16_t first, uint16_t tag, const step_pair *s,
+                        int32_t m)
+{
+    const zs_vert *pool = r->priv.verts;
+    const zs_tri *t = r->priv.tris;
+    uint16_t i;
+    for (i = first; i < r->priv.n_tris && t[i].color == tag; i++) {
+        int64_t area = zs_area2_inline(&pool[t[i].v[0]], &pool[t[i].v[1]], &pool[t[i].v[2]]);
+        int k, in = 1;
+        for (k = 0; k < 3 && in; k++) {
+            const zs_vert *a = &pool[t[i].v[k]], *b = &pool[t[i].v[k == 2 ? 0 : k + 1]];
+            int64_t ex = (int64_t)b->x - a->x, ey = (int64_t)b->y - a->y;
+            int64_t e = (ex * ((int64_t)s->py - a->y) - ey * ((int64_t)s->px - a->x)) * STEP_ONE +
+                        (ex * s->sy - ey * s->sx) * m;
+            in = area < 0 ? e <= 0 : e >= 0;
+        }
+        if (in && area != 0)
+            return 1;
+    }
+    return 0;
+}
+
+/* Least and greatest depth of record i's corners. */
+static void depth_bounds(const zs_renderer *r, uint16_t i, uint32_t *lo, uint32_t *hi)
+{
+    const zs_vert *pool = r->priv.verts;
+    const uint16_t *v = r->priv.tris[i].v;
+    uint32_t a = pool[v[0]].z, b = pool[v[1]].z, c = pool[v[2]].z;
+    *lo = a < b ? (a < c ? a : c) : (b < c ? b : c);
+    *hi = a > b ? (a > c ? a : c) : (b > c ? b : c);
+}
+
 /* Is the point at m (1/4096 of the step s) of record i's feature edge k
  * visible? The visibility the walk computed is the ids a and b at the two
  * centres around it: the point is hidden where one of them, not a face of
@@ -316,29 +362,47 @@ static int holds_edge(const zs_renderer *r, uint16_t first, uint16_t tag, uint16
  * edge (a silhouette, a boundary, or a mesh whose faces share no vertices)
  * is no line where the surface across it goes on smoothly: the planes meet
  * there, normals within the crease angle, one draw. */
-static int edge_shown(const zs_renderer *r, uint16_t i, int k, const step_pair *s, int32_t m,
-                      uint16_t a, uint16_t b, int open)
+static int edge_shown(const zs_renderer *r, tag_memo *memo, uint16_t i, int k,
+                      const step_pair *s, int32_t m, uint16_t a, uint16_t b, int open)
 {
     const zs_tri *t = r->priv.tris;
     const zs_vert *pool = r->priv.verts;
     uint16_t tf = (uint16_t)t[i].color, u = t[i].v[k], w = t[i].v[k == 2 ? 0 : k + 1];
-    int64_t zf = depth_at(r, &t[i], s, m), tol = zs_asr64(r->priv.line_depth_a - zf, 8);
+    uint32_t elo = pool[u].z < pool[w].z ? pool[u].z : pool[w].z;
+    uint32_t ehi = pool[u].z < pool[w].z ? pool[w].z : pool[u].z;
+    int64_t zf = 0, tol = 0;
     uint16_t ids[2];
-    int e;
-    int nearer = 0;
+    int e, nearer = 0, have_zf = 0;
     ids[0] = a;
     ids[1] = b;
     for (e = 0; e < 2; e++) {
         uint16_t x = ids[e], fx;
-        cover c;
+        uint32_t xlo, xhi;
         if (x == 0 || x == tf)
             continue;
-        fx = first_record(r, x);
+        fx = record_of(r, memo, x);
         if (holds_edge(r, fx, x, u, w))
             continue;
-        if (depth_at(r, &t[fx], s, m) >= zf - tol)
+        /* a triangle of one record wholly behind the edge hides nothing;
+         * one wholly in front (by the margin at the edge's nearest point)
+         * is in front at the point too */
+        depth_bounds(r, fx, &xlo, &xhi);
+        if (fx + 1u < r->priv.n_tris && t[fx + 1u].color == x) {
+            xlo = 0; /* a clipped triangle's pieces: no bounds */
+            xhi = 0xFFFFFFFFu;
+        }
+        if (xlo >= ehi)
             continue;
-        if (tag_cover(r, fx, x, s, &c) && m >= c.lo && m <= c.hi)
+        if ((int64_t)xhi >= (int64_t)elo - zs_asr64(r->priv.line_depth_a - (int64_t)elo, 8)) {
+            if (!have_zf) { /* the edge's depth, once something else may hide it */
+                zf = depth_at(r, &t[i], s, m);
+                tol = zs_asr64(r->priv.line_depth_a - zf, 8);
+                have_zf = 1;
+            }
+            if (depth_at(r, &t[fx], s, m) >= zf - tol)
+                continue;
+        }
+        if (covers_point(r, fx, x, s, m))
             return 0; /* it covers the point, in front */
         nearer++;
     }
@@ -353,17 +417,10 @@ static int edge_shown(const zs_renderer *r, uint16_t i, int k, const step_pair *
         int64_t e0 = ((int64_t)q->x - p->x) * ((int64_t)s->py - p->y) -
                      ((int64_t)q->y - p->y) * ((int64_t)s->px - p->x);
         uint16_t x = (area < 0 ? -e0 : e0) >= 0 ? b : a;
-        if (x && x != tf && meet_smoothly(r, i, first_record(r, x), s, m))
+        if (x && x != tf && meet_smoothly(r, i, record_of(r, memo, x), s, m))
             return 0;
     }
     return 1;
-}
-
-/* floor(n / d), d != 0 */
-static int64_t floor_div(int64_t n, int64_t d)
-{
-    int64_t q = n / d;
-    return (n % d != 0 && (n < 0) != (d < 0)) ? q - 1 : q;
 }
 
 /* The rows' state while a frame's lines are drawn: the ids of row y and
@@ -372,9 +429,10 @@ typedef struct line_rows {
     const uint16_t *cur, *below;
     uint8_t *flags, *pending;
     int y, w, h;
+    tag_memo memo[MEMO_SIZE];
 } line_rows;
 
-static uint16_t id_at(const line_rows *c, int64_t col, int64_t row)
+static uint16_t id_at(line_rows *c, int64_t col, int64_t row)
 {
     if (col < 0 || col >= c->w)
         return 0;
@@ -388,7 +446,7 @@ static uint16_t id_at(const line_rows *c, int64_t col, int64_t row)
 /* Where the edge p -> q (p->y < q->y, at least as tall as wide) crosses row
  * y's centre line: the pixel whose centre is nearer the crossing, if the
  * crossing is visible. */
-static void cross_row(const zs_renderer *r, const line_rows *c, uint16_t i, int k,
+static void cross_row(const zs_renderer *r, line_rows *c, uint16_t i, int k,
                       const zs_vert *p, const zs_vert *q, int open)
 {
     int64_t den = (int64_t)q->y - p->y, X, cx, rem;
@@ -399,13 +457,15 @@ static void cross_row(const zs_renderer *r, const line_rows *c, uint16_t i, int 
     X = (int64_t)p->x * den + (int64_t)(yc - p->y) * ((int64_t)q->x - p->x); /* x * den */
     if (X <= 0 || X >= 16 * (int64_t)c->w * den)
         return;
-    cx = floor_div(X - 8 * den, 16 * den); /* the centre left of the crossing */
-    rem = X - 8 * den - 16 * den * cx;     /* [0, 16 den) */
+    /* now 0 < X < 2^31 (16 w < 2^15, den < 2^16): 32-bit divisions; the
+     * centre left of the crossing, and where the crossing lies after it */
+    cx = (int32_t)((uint32_t)(X + 8 * den) / (uint32_t)(16 * den)) - 1;
+    rem = X - 8 * den - 16 * den * cx; /* [0, 16 den) */
     s.px = (int32_t)(16 * cx + 8);
     s.py = yc;
     s.sx = 16;
     s.sy = 0;
-    if (edge_shown(r, i, k, &s, (int32_t)(rem * 256 / den), id_at(c, cx, c->y),
+    if (edge_shown(r, c->memo, i, k, &s, (int32_t)((uint32_t)(rem * 256) / (uint32_t)den), id_at(c, cx, c->y),
                    id_at(c, cx + 1, c->y), open))
         c->flags[rem < 8 * den ? cx : cx + 1] = 1;
 }
@@ -414,44 +474,58 @@ static void cross_row(const zs_renderer *r, const line_rows *c, uint16_t i, int 
  * centre lines between row y's centre and row y + 1's (from the top of the
  * screen on row 0, to its bottom on the last row): for each, the pixel in
  * that column whose centre is nearer, if the crossing is visible. */
-static void cross_columns(const zs_renderer *r, const line_rows *c, uint16_t i, int k,
+static void cross_columns(const zs_renderer *r, line_rows *c, uint16_t i, int k,
                           const zs_vert *p, const zs_vert *q, int open)
 {
-    int64_t den = (int64_t)q->x - p->x, dy = (int64_t)q->y - p->y, lo, hi, c0, c1, col;
+    /* coordinates are int16 and p->x < q->x: every difference below fits
+     * 16 bits unsigned, so the products fit 32 */
+    int32_t den = q->x - p->x, dy = q->y - p->y, lo, hi, xs = p->x, xe = q->x, c0, c1, col;
     lo = c->y == 0 ? 1 : 16 * c->y + 8;
-    hi = c->below ? 16 * c->y + 24 : 16 * (int64_t)c->h;
+    hi = c->below ? 16 * c->y + 24 : 16 * c->h;
     if ((p->y < lo && q->y < lo) || (p->y >= hi && q->y >= hi))
         return;
-    /* the columns whose centres lie in [p->x, q->x) and on screen */
-    c0 = floor_div((int64_t)p->x + 7, 16);
-    c1 = floor_div((int64_t)q->x + 7, 16) - 1;
-    if (dy != 0) { /* narrowed to where the edge is within the band */
-        int64_t xa = p->x + floor_div((lo - p->y) * den, dy);
-        int64_t xb = p->x + floor_div((hi - p->y) * den, dy);
-        int64_t xl = xa < xb ? xa : xb, xh = xa < xb ? xb : xa;
-        if (floor_div(xl - 8, 16) > c0)
-            c0 = floor_div(xl - 8, 16);
-        if (floor_div(xh - 8, 16) + 1 < c1)
-            c1 = floor_div(xh - 8, 16) + 1;
+    /* the part [xs, xe] of the edge within the band, rounded down */
+    if (dy > 0) {
+        if (lo > p->y)
+            xs = p->x + (int32_t)((uint32_t)(lo - p->y) * (uint32_t)den / (uint32_t)dy);
+        if (hi < q->y)
+            xe = p->x + (int32_t)((uint32_t)(hi - p->y) * (uint32_t)den / (uint32_t)dy);
+    } else if (dy < 0) {
+        if (hi <= p->y)
+            xs = p->x + (int32_t)((uint32_t)(p->y - hi) * (uint32_t)den / (uint32_t)-dy);
+        if (lo > q->y)
+            xe = p->x + (int32_t)((uint32_t)(p->y - lo) * (uint32_t)den / (uint32_t)-dy);
     }
+    /* the columns whose centres lie in [p->x, q->x), near that part, on
+     * screen (a column either side to spare: each is tested exactly) */
+    c0 = zs_asr32(p->x + 7, 4);
+    c1 = zs_asr32(q->x + 7, 4) - 1;
+    if (zs_asr32(xs - 8, 4) > c0)
+        c0 = zs_asr32(xs - 8, 4);
+    if (zs_asr32(xe - 8, 4) + 1 < c1)
+        c1 = zs_asr32(xe - 8, 4) + 1;
     if (c0 < 0)
         c0 = 0;
     if (c1 >= c->w)
         c1 = c->w - 1;
     for (col = c0; col <= c1; col++) {
-        int64_t xc = 16 * col + 8, Y, ry, rem, row;
+        int32_t xc = 16 * col + 8, ry, row;
+        int64_t Y;
+        uint32_t rem;
         step_pair s;
-        Y = (int64_t)p->y * den + (xc - p->x) * dy; /* y * den */
-        if (xc < p->x || xc >= q->x || Y < lo * den || Y >= hi * den)
+        Y = (int64_t)p->y * den + (int64_t)(xc - p->x) * dy; /* y * den */
+        if (xc < p->x || xc >= q->x || Y < (int64_t)lo * den || Y >= (int64_t)hi * den)
             continue;
-        ry = floor_div(Y - 8 * den, 16 * den); /* the centre above the crossing */
-        rem = Y - 8 * den - 16 * den * ry;
-        row = rem < 8 * den ? ry : ry + 1;
-        s.px = (int32_t)xc;
-        s.py = (int32_t)(16 * ry + 8);
+        /* now 0 <= Y < 2^31: the centre above the crossing, and where the
+         * crossing lies below it */
+        ry = (int32_t)(((uint32_t)Y + 8u * (uint32_t)den) / (16u * (uint32_t)den)) - 1;
+        rem = (uint32_t)(Y - 8 * (int64_t)den - 16 * (int64_t)den * ry);
+        row = rem < 8u * (uint32_t)den ? ry : ry + 1;
+        s.px = xc;
+        s.py = 16 * ry + 8;
         s.sx = 0;
         s.sy = 16;
-        if (!edge_shown(r, i, k, &s, (int32_t)(rem * 256 / den), id_at(c, col, ry),
+        if (!edge_shown(r, c->memo, i, k, &s, (int32_t)(rem * 256u / (uint32_t)den), id_at(c, col, ry),
                         id_at(c, col, ry + 1), open))
             continue;
         if (row == c->y)
@@ -463,7 +537,7 @@ static void cross_columns(const zs_renderer *r, const line_rows *c, uint16_t i, 
 
 /* The feature edges of record i (mask: bits 0-2 edge k drawn, bits 3-5 edge
  * k open) crossed in row y's band. */
-static void record_lines(const zs_renderer *r, const line_rows *c, uint16_t i, unsigned mask)
+static void record_lines(const zs_renderer *r, line_rows *c, uint16_t i, unsigned mask)
 {
     const zs_vert *pool = r->priv.verts;
     const zs_tri *t = &r->priv.tris[i];
@@ -514,32 +588,15 @@ static int32_t draw_cut(const zs_renderer *r, uint16_t a, uint16_t fa, uint16_t 
     return depth_at(r, &t[fa], s, (ta + tb) / 2) <= depth_at(r, &t[fb], s, (ta + tb) / 2) ? ta : tb;
 }
 
-/* The first record of a tag, the last one asked kept. */
-typedef struct tag_memo {
-    uint16_t tag, rec;
-} tag_memo;
-
-static uint16_t memo_record(const zs_renderer *r, tag_memo *m, uint16_t tag)
-{
-    if (m->tag != tag) {
-        m->tag = tag;
-        m->rec = first_record(r, tag);
-    }
-    return m->rec;
-}
-
 /* Boundaries between draw calls that no feature edge gives (a surface
  * cutting into another, an object sunk into the floor): where neighbouring
  * centres see two draws and neither pixel has a line yet, the line goes on
  * the pixel nearer the boundary. */
-static void draw_boundaries(const zs_renderer *r, const line_rows *c)
+static void draw_boundaries(const zs_renderer *r, line_rows *c)
 {
     const int16_t *nrm = r->priv.tri_normal;
-    tag_memo ma, mb;
     step_pair s;
     int x;
-    ma.tag = mb.tag = 0;
-    ma.rec = mb.rec = 0;
     s.py = 16 * c->y + 8;
     s.sx = 16;
     s.sy = 0;
@@ -548,8 +605,8 @@ static void draw_boundaries(const zs_renderer *r, const line_rows *c)
         int32_t cut;
         if (a == b || !a || !b || c->flags[x - 1] || c->flags[x])
             continue;
-        fa = memo_record(r, &ma, a);
-        fb = memo_record(r, &mb, b);
+        fa = record_of(r, c->memo, a);
+        fb = record_of(r, c->memo, b);
         if (fa >= r->priv.n_tris || fb >= r->priv.n_tris ||
             nrm[4u * fa + 3u] == nrm[4u * fb + 3u])
             continue;
@@ -567,8 +624,8 @@ static void draw_boundaries(const zs_renderer *r, const line_rows *c)
         int32_t cut;
         if (a == b || !a || !b || c->flags[x] || c->pending[x])
             continue;
-        fa = memo_record(r, &ma, a);
-        fb = memo_record(r, &mb, b);
+        fa = record_of(r, c->memo, a);
+        fb = record_of(r, c->memo, b);
         if (fa >= r->priv.n_tris || fb >= r->priv.n_tris ||
             nrm[4u * fa + 3u] == nrm[4u * fb + 3u])
             continue;
@@ -710,6 +767,7 @@ void zs_lines_row(zs_renderer *r, int y, uint8_t *flags)
     c.y = y;
     c.w = w;
     c.h = h;
+    memset(c.memo, 0, sizeof c.memo); /* tag 0 is the background, never asked */
     if (c.below)
         zs_visible_row(r, y + 1, (uint8_t *)below);
     /* records join as their tops reach the band, leave once their bottoms

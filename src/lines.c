@@ -331,10 +331,21 @@ static int covers_point(const zs_renderer *r, uint16_t first, uint16_t tag, cons
         int k, in = 1;
         for (k = 0; k < 3 && in; k++) {
             const zs_vert *a = &pool[t[i].v[k]], *b = &pool[t[i].v[k == 2 ? 0 : k + 1]];
-            int64_t ex = (int64_t)b->x - a->x, ey = (int64_t)b->y - a->y;
-            int64_t e = (ex * ((int64_t)s->py - a->y) - ey * ((int64_t)s->px - a->x)) * STEP_ONE +
-                        (ex * s->sy - ey * s->sx) * m;
-            in = area < 0 ? e <= 0 : e >= 0;
+            int32_t ex = b->x - a->x, ey = b->y - a->y;
+            int64_t e0 = (int64_t)ex * (s->py - a->y) - (int64_t)ey * (s->px - a->x);
+            int32_t de = ex * s->sy - ey * s->sx; /* |de| < 2^21 */
+            int64_t e;
+            if (area > 0) {
+                e0 = -e0;
+                de = -de;
+            }
+            /* e0 <= 0 inside; the sign at the point is e0's where the
+             * other end agrees, else it takes the product */
+            if ((e0 <= 0) == (e0 + de <= 0))
+                e = e0;
+            else
+                e = e0 * STEP_ONE + (int64_t)de * m;
+            in = e <= 0;
         }
         if (in && area != 0)
             return 1;

@@ -392,8 +392,8 @@ static int edge_shown(const zs_renderer *r, tag_memo *memo, uint16_t i, int k,
         if (x == 0 || x == tf)
             continue;
         fx = record_of(r, memo, x);
-        if (holds_edge(r, fx, x, u, w))
-            continue;
+        if (fx >= r->priv.n_tris || t[fx].color != x || holds_edge(r, fx, x, u, w))
+            continue; /* (every id the walk renders has a record) */
         /* a triangle of one record wholly behind the edge hides nothing;
          * one wholly in front (by the margin at the edge's nearest point)
          * is in front at the point too */
@@ -428,8 +428,11 @@ static int edge_shown(const zs_renderer *r, tag_memo *memo, uint16_t i, int k,
         int64_t e0 = ((int64_t)q->x - p->x) * ((int64_t)s->py - p->y) -
                      ((int64_t)q->y - p->y) * ((int64_t)s->px - p->x);
         uint16_t x = (area < 0 ? -e0 : e0) >= 0 ? b : a;
-        if (x && x != tf && meet_smoothly(r, i, record_of(r, memo, x), s, m))
-            return 0;
+        if (x && x != tf) {
+            uint16_t fx = record_of(r, memo, x);
+            if (fx < r->priv.n_tris && meet_smoothly(r, i, fx, s, m))
+                return 0;
+        }
     }
     return 1;
 }
@@ -789,7 +792,7 @@ void zs_lines_row(zs_renderer *r, int y, uint8_t *flags)
         act[r->priv.line_n_active++] = list[r->priv.line_feat_next++];
     for (j = 0; j < r->priv.line_n_active;) {
         uint16_t i = act[j];
-        if (rec_bottom(r, i) < 16 * y + 8) {
+        if (rec_bottom(r, i) < (y == 0 ? 1 : 16 * y + 8)) { /* cross_columns' band */
             act[j] = act[--r->priv.line_n_active];
             continue;
         }

@@ -1038,9 +1038,9 @@ static void check_mono(const scene *s, const frame_out *id)
         return;
     FZ_CHECK(mono_frame(&r, s, NO_ZLINE(c) ? ZS_MODE_SPAN : ZS_MODE_ZLINE, ZS_FMT_MONO_MSB,
                         ZS_MONO_LINES, 8, g_mono[1]), "lines refused the second time");
-    /* (a clipped triangle counted dropped may have left a piece kept too) */
-    int all_hold_centres =
-        zs_frame_stats(&r)->tris_empty == 0 && zs_frame_stats(&r)->tris_dropped == 0;
+    /* no record kept but the stored ones (a clipped triangle counted stored
+     * or dropped may have left a centre-less piece kept) */
+    int all_hold_centres = r.priv.n_tris == zs_frame_stats(&r)->records;
     for (int y = 0; y < h; y++)
         for (int x = 0; x < w; x++) {
             int a = bit_of(g_mono[0], ZS_FMT_MONO_PAGE, w, x, y);

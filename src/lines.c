@@ -244,7 +244,8 @@ static int64_t depth_at(const zs_renderer *r, const zs_tri *t, const step_pair *
 {
     const zs_vert *a = &r->priv.verts[t->v[0]], *b = &r->priv.verts[t->v[1]],
                   *c = &r->priv.verts[t->v[2]];
-    int64_t dx1 = b->x - a->x, dy1 = b->y - a->y, dx2 = c->x - a->x, dy2 = c->y - a->y;
+    int64_t dx1 = (int32_t)b->x - a->x, dy1 = (int32_t)b->y - a->y;
+    int64_t dx2 = (int32_t)c->x - a->x, dy2 = (int32_t)c->y - a->y;
     int64_t dz1 = zs_asr64((int64_t)b->z - (int64_t)a->z, 6);
     int64_t dz2 = zs_asr64((int64_t)c->z - (int64_t)a->z, 6);
     int64_t den = dx1 * dy2 - dx2 * dy1;
@@ -331,7 +332,7 @@ static int covers_point(const zs_renderer *r, uint16_t first, uint16_t tag, cons
         int k, in = 1;
         for (k = 0; k < 3 && in; k++) {
             const zs_vert *a = &pool[t[i].v[k]], *b = &pool[t[i].v[k == 2 ? 0 : k + 1]];
-            int32_t ex = b->x - a->x, ey = b->y - a->y;
+            int32_t ex = (int32_t)b->x - a->x, ey = (int32_t)b->y - a->y;
             int64_t e0 = (int64_t)ex * (s->py - a->y) - (int64_t)ey * (s->px - a->x);
             int32_t de = ex * s->sy - ey * s->sx; /* |de| < 2^21 */
             int64_t e;
@@ -493,7 +494,8 @@ static void cross_columns(const zs_renderer *r, line_rows *c, uint16_t i, int k,
 {
     /* coordinates are int16 and p->x < q->x: every difference below fits
      * 16 bits unsigned, so the products fit 32 */
-    int32_t den = q->x - p->x, dy = q->y - p->y, lo, hi, xs = p->x, xe = q->x, c0, c1, col;
+    int32_t den = (int32_t)q->x - p->x, dy = (int32_t)q->y - p->y, lo, hi, xs = p->x, xe = q->x;
+    int32_t c0, c1, col;
     lo = c->y == 0 ? 1 : 16 * c->y + 8;
     hi = c->below ? 16 * c->y + 24 : 16 * c->h;
     if ((p->y < lo && q->y < lo) || (p->y >= hi && q->y >= hi))
@@ -512,8 +514,8 @@ static void cross_columns(const zs_renderer *r, line_rows *c, uint16_t i, int k,
     }
     /* the columns whose centres lie in [p->x, q->x), near that part, on
      * screen (a column either side to spare: each is tested exactly) */
-    c0 = zs_asr32(p->x + 7, 4);
-    c1 = zs_asr32(q->x + 7, 4) - 1;
+    c0 = zs_asr32((int32_t)p->x + 7, 4);
+    c1 = zs_asr32((int32_t)q->x + 7, 4) - 1;
     if (zs_asr32(xs - 8, 4) > c0)
         c0 = zs_asr32(xs - 8, 4);
     if (zs_asr32(xe - 8, 4) + 1 < c1)
@@ -558,7 +560,7 @@ static void record_lines(const zs_renderer *r, line_rows *c, uint16_t i, unsigne
     int k;
     for (k = 0; k < 3; k++) {
         const zs_vert *p = &pool[t->v[k]], *q = &pool[t->v[k == 2 ? 0 : k + 1]];
-        int32_t dx = q->x - p->x, dy = q->y - p->y;
+        int32_t dx = (int32_t)q->x - p->x, dy = (int32_t)q->y - p->y;
         int open = (mask >> (3 + k)) & 1;
         if (!((mask >> k) & 1))
             continue;

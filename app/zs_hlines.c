@@ -199,6 +199,66 @@ static int clip_near(const double in[3][3], double zn, double out[4][3])
     return n;
 }
 
+/* The segment where triangles t and u (eye space) meet, if they do: each
+ * cut by the other's plane gives an interval of the planes' common line;
+ * the segment is the overlap of the two. */
+static int tri_meet(const double *pos, const uint32_t *t, const uint32_t *u, double A[3],
+                    double B[3])
+{
+    const uint32_t *tr[2] = {t, u};
+    double n[2][3], dir[3], lo[2], hi[2], pt[2][2][3];
+    normal_of(pos, t, n[0]);
+    normal_of(pos, u, n[1]);
+    dir[0] = n[0][1] * n[1][2] - n[0][2] * n[1][1];
+    dir[1] = n[0][2] * n[1][0] - n[0][0] * n[1][2];
+    dir[2] = n[0][0] * n[1][1] - n[0][1] * n[1][0];
+    if (dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2] < 1e-18)
+        return 0; /* parallel */
+    for (int w = 0; w < 2; w++) {
+        const double *b0 = pos + 3 * tr[1 - w][0], *nb = n[1 - w];
+        double d[3], q[2][3];
+        int nq = 0;
+        for (int i = 0; i < 3; i++) {
+            const double *p = pos + 3 * tr[w][i];
+            d[i] = (p[0] - b0[0]) * nb[0] + (p[1] - b0[1]) * nb[1] + (p[2] - b0[2]) * nb[2];
+        }
+        for (int i = 0; i < 3 && nq < 2; i++) {
+            int j = (i + 1) % 3;
+            const double *p = pos + 3 * tr[w][i], *o = pos + 3 * tr[w][j];
+            if ((d[i] < 0) == (d[j] < 0) || d[i] == d[j]) continue;
+            double f = d[i] / (d[i] - d[j]);
+            for (int c = 0; c < 3; c++) q[nq][c] = p[c] + f * (o[c] - p[c]);
+            nq++;
+        }
+        if (nq < 2) return 0;
+        double s0 = q[0][0] * dir[0] + q[0][1] * dir[1] + q[0][2] * dir[2];
+        double s1 = q[1][0] * dir[0] + q[1][1] * dir[1] + q[1][2] * dir[2];
+        int sw = s0 > s1;
+        lo[w] = sw ? s1 : s0;
+        hi[w] = sw ? s0 : s1;
+        memcpy(pt[w][0], q[sw], sizeof pt[w][0]);
+        memcpy(pt[w][1], q[!sw], sizeof pt[w][1]);
+    }
+    int wl = lo[0] > lo[1] ? 0 : 1, wh = hi[0] < hi[1] ? 0 : 1;
+    if (lo[wl] >= hi[wh]) return 0;
+    memcpy(A, pt[wl][0], 3 * sizeof *A);
+    memcpy(B, pt[wh][1], 3 * sizeof *B);
+    return 1;
+}
+
+/* Cuts the eye-space segment A..B to the near plane; 0 if nothing is left. */
+static int near_cut(const zs_hl_view *v, double A[3], double B[3])
+{
+    if (A[2] > -v->near_z && B[2] > -v->near_z) return 0;
+    if (A[2] > -v->near_z || B[2] > -v->near_z) {
+        double *in = A[2] > -v->near_z ? A : B, *o = in == A ? B : A;
+        double t = (-v->near_z - o[2]) / (in[2] - o[2]);
+        for (int c = 0; c < 3; c++) in[c] = o[c] + t * (in[c] - o[c]);
+        in[2] = -v->near_z;
+    }
+    return 1;
+}
+
 int zs_hl_compute(const zs_hl_view *v, const double *pos, size_t nverts, const uint32_t *idx,
                   const int *group, size_t ntris, zs_hl_result *out)
 {
@@ -206,6 +266,9 @@ int zs_hl_compute(const zs_hl_view *v, const double *pos, size_t nverts, const u
     edge_rec *er = malloc((3 * ntris + 1) * sizeof *er);
     uint8_t *front = malloc(ntris + 1);
     ival *hid = NULL;
+    struct {
+        double lo[3], hi[3];
+    } *box = NULL;
     size_t hcap = 0, nf = 0, ne = 0, i, j;
     double cosc = cos((v->crease_deg > 0 ? v->crease_deg : 30.0) * PI / 180.0);
     int rc = -1;
@@ -271,14 +334,8 @@ int zs_hl_compute(const zs_hl_view *v, const double *pos, size_t nverts, const u
             double A[3], B[3];
             memcpy(A, pos + 3 * er[i].a, sizeof A);
             memcpy(B, pos + 3 * er[i].b, sizeof B);
-            /* in front of the near plane only */
-            if (A[2] > -v->near_z && B[2] > -v->near_z) continue;
-            if (A[2] > -v->near_z || B[2] > -v->near_z) {
-                double *in = A[2] > -v->near_z ? A : B, *o = in == A ? B : A;
-                double t = (-v->near_z - o[2]) / (in[2] - o[2]);
-                for (int c = 0; c < 3; c++) in[c] = o[c] + t * (in[c] - o[c]);
-                in[2] = -v->near_z;
-            }
+            if (!near_cut(v, A, B)) /* in front of the near plane only */
+                continue;
             out->feature_edges++;
             /* the faces of its own triangles do not hide it */
             if (clip_edge(v, A, B, faces, nf, (long)t1, two ? (long)t2 : -1, &hid, &hcap, out) !=
@@ -286,8 +343,37 @@ int zs_hl_compute(const zs_hl_view *v, const double *pos, size_t nverts, const u
                 goto done;
         }
     }
+    /* where front faces of two groups cut into each other: the segment
+     * both share, clipped like an edge (boxes first: most pairs are apart) */
+    box = malloc((ntris + 1) * sizeof *box);
+    if (!box) goto done;
+    for (i = 0; i < ntris; i++)
+        for (int c = 0; c < 3; c++) {
+            box[i].lo[c] = box[i].hi[c] = pos[3 * idx[3 * i] + c];
+            for (int k = 1; k < 3; k++) {
+                double p = pos[3 * idx[3 * i + k] + c];
+                if (p < box[i].lo[c]) box[i].lo[c] = p;
+                if (p > box[i].hi[c]) box[i].hi[c] = p;
+            }
+        }
+    for (i = 0; i < ntris; i++) {
+        if (!front[i]) continue;
+        for (j = i + 1; j < ntris; j++) {
+            double A[3], B[3];
+            int c;
+            if (!front[j] || group[j] == group[i]) continue;
+            for (c = 0; c < 3; c++)
+                if (box[i].lo[c] > box[j].hi[c] || box[j].lo[c] > box[i].hi[c]) break;
+            if (c < 3 || !tri_meet(pos, idx + 3 * i, idx + 3 * j, A, B) || !near_cut(v, A, B))
+                continue;
+            out->meeting_lines++;
+            if (clip_edge(v, A, B, faces, nf, (long)i, (long)j, &hid, &hcap, out) != 0)
+                goto done;
+        }
+    }
     rc = 0;
 done:
+    free(box);
     free(faces);
     free(er);
     free(front);

@@ -11,8 +11,9 @@
  * where the segment's projection is inside a face and the face is nearer
  * (1/w is affine along the segment and over each face), that interval is
  * hidden. What is left is exact up to double rounding (quantitative
- * invisibility by interval subtraction). Lines where two meshes cut into
- * each other are not feature edges and are not drawn.
+ * invisibility by interval subtraction). Where front faces of two meshes
+ * cut into each other, the segment they share (a boundary between draw
+ * calls, as the core draws it) is clipped the same way.
  *
  * The camera is the core's: eye space, looking down -z, vertical field of
  * view fov; pixel centres at +0.5, y down.
@@ -38,6 +39,7 @@ typedef struct zs_hl_result {
     zs_hl_seg *seg;
     size_t n, cap;
     size_t feature_edges;  /* edges that were clipped */
+    size_t meeting_lines;  /* segments where two meshes' faces meet, clipped */
 } zs_hl_result;
 
 /* pos: 3 per vertex in eye space; idx: 3 per triangle (counter-clockwise

@@ -1,25 +1,23 @@
 /* SPDX-License-Identifier: MIT */
-/* Hidden-line drawing from the visibility the span walk computes: each row
- * is rendered as triangle ids, and where two neighbouring pixels (left and
- * right, above and below) differ, the stage asks whether a feature edge
- * lies between their centres: a silhouette (against the background or a
- * farther surface), a crease (dihedral angle above the crease angle), a
- * mesh boundary or a boundary between draw calls. Only what is visible has
- * ids, so hidden edges are never drawn.
+/* Hidden-line drawing: the feature edges of the mesh, clipped by the
+ * visibility the span walk computes. At the first row the records (every
+ * front face of the frame, the triangles too small to hold a pixel centre
+ * included: kept out of the rendering) are linked around their vertices,
+ * and each record edge is classed from its faces: a silhouette or boundary
+ * (no record across: the neighbour faces away, or there is none), a crease
+ * (the dihedral angle of the exact eye-space normals above the crease
+ * angle), or smooth. The records holding feature edges are sorted by their
+ * tops and come into an active list as the rows reach them.
  *
- * The question is answered by walking the mesh along the segment between
- * the two centres: from the first pixel's triangle across the edge it
- * leaves by to the triangle on the other side (records of a hidden-line
- * frame include the triangles too small to hold a pixel centre, kept out
- * of the rendering, and the records around each vertex are listed), until
- * the second pixel's triangle is reached. Every edge crossed is checked:
- * its dihedral angle, from exact eye-space normals of the mesh's own
- * positions. A crossed edge without a neighbour (a silhouette, whose
- * neighbour faces away, or a boundary) ends the walk; then the two sides
- * are one surface only where their planes meet there (meshes whose faces
- * do not share vertices). The line goes on the pixel whose centre is nearer
- * the boundary, one pixel wide. Rows are rendered one ahead of the output
- * so that the pixel above a boundary can get it. */
+ * An edge taller than wide is drawn where it crosses each row's centre
+ * line, one that is wider where it crosses each column's: on the pixel
+ * whose centre is nearer the crossing, so a line is one pixel wide, and
+ * at most half a pixel off. The crossing lies on the step between two
+ * pixel centres, whose ids (rows are rendered one ahead of the output)
+ * say what is in front there; the crossing is drawn unless one of them
+ * covers it nearer than the edge. An edge seen where no pixel centre sees
+ * its faces (a sheet seen edge-on, the tip of a sharp corner) is drawn
+ * all the same, which a change of ids between pixels could not give. */
 #include "zs_mono.h"
 
 
@@ -88,34 +86,6 @@ void zs_lines_draw(zs_renderer *r, const zs_mesh *m, const int32_t mv[3][3], uin
     }
 }
 
-void zs_lines_begin(zs_renderer *r)
-{
-    int64_t A;
-    uint16_t i, draw = 0, *head = r->priv.line_vert_head, *next = r->priv.line_next_rec;
-    int deg = r->shade.crease_deg ? r->shade.crease_deg : 30, k;
-    r->priv.crease_cos = zs_fx_cos_deg(ZS_FX(deg)) * 4096; /* Q16 -> Q28 */
-    r->priv.line_next = 0;
-    if (r->priv.depth_scale != 0) {
-        A = r->priv.depth_scale;
-    } else {
-        int64_t f = r->cam.far_z, nz = r->cam.near_z;
-        A = (f * ((int64_t)1 << 30)) / (f - nz);
-    }
-    r->priv.line_depth_a = A;
-    for (i = 0; i < r->priv.n_verts; i++)
-        head[i] = NO_RECORD;
-    for (i = 0; i < r->priv.n_tris; i++) {
-        const zs_tri *t = &r->priv.tris[i];
-        if (r->priv.draw_starts[i >> 3] & (1u << (i & 7u)))
-            draw++;
-        r->priv.tri_normal[4u * i + 3u] = (int16_t)(draw & 0x7FFFu); /* draw number (wrapping) */
-        for (k = 0; k < 3; k++) {
-            next[3u * i + (unsigned)k] = head[t->v[k]];
-            head[t->v[k]] = i;
-        }
-    }
-}
-
 /* The record across edge k (v[k] -> v[k + 1]) of record i: the one that
  * runs the edge the other way (a consistently wound mesh); NO_RECORD if
  * none (a silhouette, whose neighbour faced away, a boundary, or a mesh
@@ -148,23 +118,6 @@ static uint16_t first_record(const zs_renderer *r, uint16_t tag)
             hi = mid;
     }
     return (uint16_t)lo;
-}
-
-/* Window depth (Q2.30) of record t's plane at (px, py) in 1/16 px. The
- * depth differences lose their 6 low bits so that every product fits 63
- * bits (|dx|, |dy| < 2^16); the plane is only compared within 1/64 here. */
-static int64_t plane_depth(const zs_renderer *r, const zs_tri *t, int32_t px, int32_t py)
-{
-    const zs_vert *a = &r->priv.verts[t->v[0]], *b = &r->priv.verts[t->v[1]],
-                  *c = &r->priv.verts[t->v[2]];
-    int64_t dx1 = b->x - a->x, dy1 = b->y - a->y, dx2 = c->x - a->x, dy2 = c->y - a->y;
-    int64_t dz1 = zs_asr64((int64_t)b->z - (int64_t)a->z, 6);
-    int64_t dz2 = zs_asr64((int64_t)c->z - (int64_t)a->z, 6);
-    int64_t den = dx1 * dy2 - dx2 * dy1;
-    int64_t num = (dz1 * dy2 - dz2 * dy1) * (px - a->x) + (dz2 * dx1 - dz1 * dx2) * (py - a->y);
-    if (den == 0)
-        return a->z;
-    return (int64_t)a->z + (num / den) * 64;
 }
 
 /* Positions along the step from one pixel centre to its neighbour's, in
@@ -283,13 +236,25 @@ static int tag_cover(const zs_renderer *r, uint16_t first, uint16_t tag, const s
     return any;
 }
 
-/* Depth of record t's plane at m (1/4096 of the step): window depth is
- * affine on the screen, so the two centres' depths interpolate it. */
+/* Window depth (Q2.30) of record t's plane at m (1/4096 of the step s).
+ * The depth differences lose their 6 low bits so that every product fits
+ * 63 bits (|dx|, |dy| < 2^16); the plane is only compared within 1/256 of
+ * A - z here. */
 static int64_t depth_at(const zs_renderer *r, const zs_tri *t, const step_pair *s, int32_t m)
 {
-    int64_t z0 = plane_depth(r, t, s->px, s->py);
-    int64_t z1 = plane_depth(r, t, s->px + s->sx, s->py + s->sy);
-    return z0 + zs_asr64((z1 - z0) * m, 12);
+    const zs_vert *a = &r->priv.verts[t->v[0]], *b = &r->priv.verts[t->v[1]],
+                  *c = &r->priv.verts[t->v[2]];
+    int64_t dx1 = (int32_t)b->x - a->x, dy1 = (int32_t)b->y - a->y;
+    int64_t dx2 = (int32_t)c->x - a->x, dy2 = (int32_t)c->y - a->y;
+    int64_t dz1 = zs_asr64((int64_t)b->z - (int64_t)a->z, 6);
+    int64_t dz2 = zs_asr64((int64_t)c->z - (int64_t)a->z, 6);
+    int64_t den = dx1 * dy2 - dx2 * dy1;
+    int64_t gx = dz1 * dy2 - dz2 * dy1, gy = dz2 * dx1 - dz1 * dx2;
+    int64_t num = gx * (s->px - a->x) + gy * (s->py - a->y) +
+                  zs_asr64((gx * s->sx + gy * s->sy) * m, 12);
+    if (den == 0)
+        return a->z;
+    return (int64_t)a->z + (num / den) * 64;
 }
 
 /* Do records a and b meet at m? Their depths agree to 1/64 of A - z
@@ -319,184 +284,531 @@ static int meet_smoothly(const zs_renderer *r, uint16_t i, uint16_t j, const ste
            meet_at(r, &r->priv.tris[i], &r->priv.tris[j], s, m);
 }
 
-/* The walk's steps at most: a pixel's width holds a few triangles. */
-#define WALK_STEPS 16
-
 static int has_vertex(const zs_tri *t, uint16_t v)
 {
     return t->v[0] == v || t->v[1] == v || t->v[2] == v;
 }
 
-/* The end of edge k of record t that lies on the segment, or -1. */
-static int vertex_on(const zs_renderer *r, const zs_tri *t, int k, const step_pair *s)
-{
-    int e;
-    for (e = 0; e < 2; e++) {
-        uint16_t v = t->v[(k + e) % 3];
-        const zs_vert *p = &r->priv.verts[v];
-        if (s->sy == 0 ? p->y == s->py && p->x >= s->px && p->x <= s->px + s->sx
-                       : p->x == s->px && p->y >= s->py && p->y <= s->py + s->sy)
-            return v;
-    }
-    return -1;
-}
-
-/* Around vertex v (on the segment) from record i to a record tagged b,
- * one way round (dir 0: across the edge that starts at v; 1: that ends
- * there): smooth if every edge crossed is. An open fan (a silhouette or
- * boundary through v) is not. */
-static int smooth_fan(const zs_renderer *r, uint16_t i, uint16_t v, uint16_t b, int dir)
+/* Does a record tagged tag (from first on) hold the edge u-w? Then it is
+ * the face across a crease, not something in front of the edge. */
+static int holds_edge(const zs_renderer *r, uint16_t first, uint16_t tag, uint16_t u, uint16_t w)
 {
     const zs_tri *t = r->priv.tris;
-    const int16_t *nrm = r->priv.tri_normal;
-    int steps;
-    for (steps = 0; steps < WALK_STEPS; steps++) {
-        int c = t[i].v[0] == v ? 0 : t[i].v[1] == v ? 1 : 2;
-        uint16_t j = neighbour(r, i, dir ? (c + 2) % 3 : c);
-        if (j == NO_RECORD || dot_q28(&nrm[4u * i], &nrm[4u * j]) < r->priv.crease_cos)
-            return 0;
-        if (t[j].color == b)
+    uint16_t i;
+    for (i = first; i < r->priv.n_tris && t[i].color == tag; i++)
+        if (has_vertex(&t[i], u) && has_vertex(&t[i], w))
             return 1;
-        i = j;
-    }
     return 0;
 }
 
+/* The first records of the last tags asked, by the tag's low bits (ids
+ * repeat along an edge and along a row). */
+#define MEMO_SIZE 16u
+typedef struct tag_memo {
+    uint16_t tag, rec;
+} tag_memo;
 
-/* Is the way from a (at c0, cover ca) to b (at c1, cover cb) smooth? The
- * walk leaves a's record by the edge its cover ends at, and crosses
- * edge after edge: no edge is drawn if it reaches a record tagged b having
- * crossed only smooth edges. A crease ends it (edge), and so does reaching
- * c1 on a record not tagged b (b hides it: b's silhouette or boundary).
- * Without a neighbour, or when the step would not advance (a vertex on the
- * segment), the last record and b are compared directly. */
-static int smooth_walk(const zs_renderer *r, uint16_t b, const cover *ca, uint16_t fb,
-                       const cover *cb, const step_pair *s)
+static uint16_t record_of(const zs_renderer *r, tag_memo *memo, uint16_t tag)
 {
+    tag_memo *m = &memo[tag & (MEMO_SIZE - 1u)];
+    if (m->tag != tag) {
+        m->tag = tag;
+        m->rec = first_record(r, tag);
+    }
+    return m->rec;
+}
+
+/* Does a record tagged tag (from first on) cover the point at m (1/4096
+ * of the step s), edges included? Edge functions are linear along the
+ * step, so 4096 times one at the point is exact in 64 bits. */
+static int covers_point(const zs_renderer *r, uint16_t first, uint16_t tag, const step_pair *s,
+                        int32_t m)
+{
+    const zs_vert *pool = r->priv.verts;
     const zs_tri *t = r->priv.tris;
-    const int16_t *nrm = r->priv.tri_normal;
-    uint16_t n = r->priv.n_tris, i = ca->rec_hi, j;
-    int32_t pos = ca->hi, lo, hi;
-    int k = ca->edge_hi, steps, kl, kh;
-    for (steps = 0; steps < WALK_STEPS; steps++) {
-        if (k < 0) /* this record reaches c1, where b is in front */
-            return 0;
-        j = neighbour(r, i, k);
-        if (j == NO_RECORD)
-            break;
-        if (dot_q28(&nrm[4u * i], &nrm[4u * j]) < r->priv.crease_cos)
-            return 0; /* a crease */
-        if (t[j].color == b)
-            return 1;
-        if (!cover_span(r, &t[j], s, &lo, &hi, &kl, &kh) || hi <= pos) {
-            /* no way on across j: the segment meets a vertex of edge k */
-            int v = vertex_on(r, &t[i], k, s);
-            if (v >= 0 && has_vertex(&t[fb], (uint16_t)v))
-                return smooth_fan(r, i, (uint16_t)v, b, 0) && smooth_fan(r, i, (uint16_t)v, b, 1);
-            break;
+    uint16_t i;
+    for (i = first; i < r->priv.n_tris && t[i].color == tag; i++) {
+        int64_t area = zs_area2_inline(&pool[t[i].v[0]], &pool[t[i].v[1]], &pool[t[i].v[2]]);
+        int k, in = 1;
+        for (k = 0; k < 3 && in; k++) {
+            const zs_vert *a = &pool[t[i].v[k]], *b = &pool[t[i].v[k == 2 ? 0 : k + 1]];
+            int32_t ex = (int32_t)b->x - a->x, ey = (int32_t)b->y - a->y;
+            int64_t e0 = (int64_t)ex * (s->py - a->y) - (int64_t)ey * (s->px - a->x);
+            int32_t de = ex * s->sy - ey * s->sx; /* |de| < 2^21 */
+            int64_t e;
+            if (area > 0) {
+                e0 = -e0;
+                de = -de;
+            }
+            /* e0 <= 0 inside; the sign at the point is e0's where the
+             * other end agrees, else it takes the product */
+            if ((e0 <= 0) == (e0 + de <= 0))
+                e = e0;
+            else
+                e = e0 * STEP_ONE + (int64_t)de * m;
+            in = e <= 0;
         }
-        i = j;
-        pos = hi;
-        k = kh;
-    }
-    for (j = fb; j < n && t[j].color == b; j++)
-        if (meet_smoothly(r, i, j, s, (pos + cb->lo) / 2))
+        if (in && area != 0)
             return 1;
+    }
     return 0;
 }
 
-/* Is there an edge between the pixel centres c0 (tag a) and c1 (tag b),
- * and on which of the two pixels does it go? 0: none; 1: c0's pixel; 2:
- * c1's. The line goes on the pixel whose centre is nearer the boundary, so
- * it is never more than half a pixel off along the step (the boundary is
- * where a's cover ends or b's begins, whichever is in front). */
-static int pair_edge(const zs_renderer *r, uint16_t a, uint16_t b, const step_pair *s)
+/* Least and greatest depth of record i's corners. */
+static void depth_bounds(const zs_renderer *r, uint16_t i, uint32_t *lo, uint32_t *hi)
 {
-    uint16_t fa = 0, fb = 0;
-    cover ca, cb;
-    int32_t ta, tb, cut;
-    int walk = 0;
-    if (a == b)
-        return 0;
-    ca.hi = 0;
-    cb.lo = STEP_ONE;
-    if (a) {
-        fa = first_record(r, a);
-        walk = tag_cover(r, fa, a, s, &ca);
-        if (!walk)
-            ca.hi = 0;
-    }
-    if (b) {
-        fb = first_record(r, b);
-        if (!tag_cover(r, fb, b, s, &cb))
-            cb.lo = STEP_ONE;
-    }
-    ta = ca.hi; /* where a's cover ends */
-    tb = cb.lo; /* where b's begins */
-    if (walk && b && smooth_walk(r, b, &ca, fb, &cb, s))
-        return 0;
-    if (!a)
-        cut = tb;
-    else if (!b)
-        cut = ta;
-    else if (ta >= STEP_ONE) /* a reaches c1, b is in front there */
-        cut = tb;
-    else if (tb <= 0) /* b reaches c0 */
-        cut = ta;
-    else if (ta <= tb) /* a gap between, covered by what no centre sees */
-        cut = (ta + tb) / 2;
-    else /* both cover the middle: the nearer one's end */
-        cut = depth_at(r, &r->priv.tris[fa], s, (ta + tb) / 2) <=
-                      depth_at(r, &r->priv.tris[fb], s, (ta + tb) / 2)
-                  ? ta
-                  : tb;
-    return cut < STEP_ONE / 2 ? 1 : 2;
+    const zs_vert *pool = r->priv.verts;
+    const uint16_t *v = r->priv.tris[i].v;
+    uint32_t a = pool[v[0]].z, b = pool[v[1]].z, c = pool[v[2]].z;
+    *lo = a < b ? (a < c ? a : c) : (b < c ? b : c);
+    *hi = a > b ? (a > c ? a : c) : (b > c ? b : c);
 }
 
-/* Flags of row y: what the row above left for it (line_pending), the
- * edges between its pixels, and those between it and the row below, which
- * is rendered now (so the line can go on either side of a boundary); the
- * flags the row below gets are left in line_pending. */
+/* Is the point at m (1/4096 of the step s) of record i's feature edge k
+ * visible? The visibility the walk computed is the ids a and b at the two
+ * centres around it: the point is hidden where one of them, not a face of
+ * the edge, covers it and lies in front (by more than 1/256 of 1/w, a
+ * relative margin, so surfaces that touch the edge do not hide it), or
+ * where both lie in front and the point is between their covers. What no
+ * centre sees is thinner than a pixel there and hides nothing. An open
+ * edge (a silhouette, a boundary, or a mesh whose faces share no vertices)
+ * is no line where the surface across it goes on smoothly: the planes meet
+ * there, normals within the crease angle, one draw. */
+static int edge_shown(const zs_renderer *r, tag_memo *memo, uint16_t i, int k,
+                      const step_pair *s, int32_t m, uint16_t a, uint16_t b, int open)
+{
+    const zs_tri *t = r->priv.tris;
+    const zs_vert *pool = r->priv.verts;
+    uint16_t tf = (uint16_t)t[i].color, u = t[i].v[k], w = t[i].v[k == 2 ? 0 : k + 1];
+    uint32_t elo = pool[u].z < pool[w].z ? pool[u].z : pool[w].z;
+    uint32_t ehi = pool[u].z < pool[w].z ? pool[w].z : pool[u].z;
+    int64_t zf = 0, tol = 0;
+    uint16_t ids[2];
+    int e, nearer = 0, have_zf = 0;
+    ids[0] = a;
+    ids[1] = b;
+    for (e = 0; e < 2; e++) {
+        uint16_t x = ids[e], fx;
+        uint32_t xlo, xhi;
+        if (x == 0 || x == tf)
+            continue;
+        fx = record_of(r, memo, x);
+        if (fx >= r->priv.n_tris || t[fx].color != x || holds_edge(r, fx, x, u, w))
+            continue; /* (every id the walk renders has a record) */
+        /* a triangle of one record wholly behind the edge hides nothing;
+         * one wholly in front (by the margin at the edge's nearest point)
+         * is in front at the point too */
+        depth_bounds(r, fx, &xlo, &xhi);
+        if (fx + 1u < r->priv.n_tris && t[fx + 1u].color == x) {
+            xlo = 0; /* a clipped triangle's pieces: no bounds */
+            xhi = 0xFFFFFFFFu;
+        }
+        if (xlo >= ehi)
+            continue;
+        if ((int64_t)xhi >= (int64_t)elo - zs_asr64(r->priv.line_depth_a - (int64_t)elo, 8)) {
+            if (!have_zf) { /* the edge's depth, once something else may hide it */
+                zf = depth_at(r, &t[i], s, m);
+                tol = zs_asr64(r->priv.line_depth_a - zf, 8);
+                have_zf = 1;
+            }
+            if (depth_at(r, &t[fx], s, m) >= zf - tol)
+                continue;
+        }
+        if (covers_point(r, fx, x, s, m))
+            return 0; /* it covers the point, in front */
+        nearer++;
+    }
+    /* neither covers it, and both are in front there: what lies between
+     * them (a corner of a third triangle the step cuts) is taken to be too */
+    if (nearer == 2)
+        return 0;
+    if (open) {
+        /* the centre on the far side of the edge from the record's inside */
+        const zs_vert *p = &pool[u], *q = &pool[w];
+        int64_t area = zs_area2_inline(&pool[t[i].v[0]], &pool[t[i].v[1]], &pool[t[i].v[2]]);
+        int64_t e0 = ((int64_t)q->x - p->x) * ((int64_t)s->py - p->y) -
+                     ((int64_t)q->y - p->y) * ((int64_t)s->px - p->x);
+        uint16_t x = (area < 0 ? -e0 : e0) >= 0 ? b : a;
+        if (x && x != tf) {
+            uint16_t fx = record_of(r, memo, x);
+            if (fx < r->priv.n_tris && meet_smoothly(r, i, fx, s, m))
+                return 0;
+        }
+    }
+    return 1;
+}
+
+/* The rows' state while a frame's lines are drawn: the ids of row y and
+ * the row below (NULL at the bottom), the flags of both. */
+typedef struct line_rows {
+    const uint16_t *cur, *below;
+    uint8_t *flags, *pending;
+    int y, w, h;
+    tag_memo memo[MEMO_SIZE];
+} line_rows;
+
+static uint16_t id_at(line_rows *c, int64_t col, int64_t row)
+{
+    if (col < 0 || col >= c->w)
+        return 0;
+    if (row == c->y)
+        return c->cur[col];
+    if (row == c->y + 1 && c->below)
+        return c->below[col];
+    return 0;
+}
+
+/* Where the edge p -> q (p->y < q->y, at least as tall as wide) crosses row
+ * y's centre line: the pixel whose centre is nearer the crossing, if the
+ * crossing is visible. */
+static void cross_row(const zs_renderer *r, line_rows *c, uint16_t i, int k,
+                      const zs_vert *p, const zs_vert *q, int open)
+{
+    int64_t den = (int64_t)q->y - p->y, X, cx, rem;
+    int32_t yc = 16 * c->y + 8;
+    step_pair s;
+    if (yc < p->y || yc >= q->y)
+        return;
+    X = (int64_t)p->x * den + (int64_t)(yc - p->y) * ((int64_t)q->x - p->x); /* x * den */
+    if (X <= 0 || X >= 16 * (int64_t)c->w * den)
+        return;
+    /* now 0 < X < 2^31 (16 w < 2^15, den < 2^16): 32-bit divisions; the
+     * centre left of the crossing, and where the crossing lies after it */
+    cx = (int32_t)((uint32_t)(X + 8 * den) / (uint32_t)(16 * den)) - 1;
+    rem = X - 8 * den - 16 * den * cx; /* [0, 16 den) */
+    s.px = (int32_t)(16 * cx + 8);
+    s.py = yc;
+    s.sx = 16;
+    s.sy = 0;
+    if (edge_shown(r, c->memo, i, k, &s, (int32_t)((uint32_t)(rem * 256) / (uint32_t)den), id_at(c, cx, c->y),
+                   id_at(c, cx + 1, c->y), open))
+        c->flags[rem < 8 * den ? cx : cx + 1] = 1;
+}
+
+/* Where the edge p -> q (p->x < q->x, wider than tall) crosses column
+ * centre lines between row y's centre and row y + 1's (from the top of the
+ * screen on row 0, to its bottom on the last row): for each, the pixel in
+ * that column whose centre is nearer, if the crossing is visible. */
+static void cross_columns(const zs_renderer *r, line_rows *c, uint16_t i, int k,
+                          const zs_vert *p, const zs_vert *q, int open)
+{
+    /* coordinates are int16 and p->x < q->x: every difference below fits
+     * 16 bits unsigned, so the products fit 32 */
+    int32_t den = (int32_t)q->x - p->x, dy = (int32_t)q->y - p->y, lo, hi, xs = p->x, xe = q->x;
+    int32_t c0, c1, col;
+    lo = c->y == 0 ? 1 : 16 * c->y + 8;
+    hi = c->below ? 16 * c->y + 24 : 16 * c->h;
+    if ((p->y < lo && q->y < lo) || (p->y >= hi && q->y >= hi))
+        return;
+    /* the part [xs, xe] of the edge within the band, rounded down */
+    if (dy > 0) {
+        if (lo > p->y)
+            xs = p->x + (int32_t)((uint32_t)(lo - p->y) * (uint32_t)den / (uint32_t)dy);
+        if (hi < q->y)
+            xe = p->x + (int32_t)((uint32_t)(hi - p->y) * (uint32_t)den / (uint32_t)dy);
+    } else if (dy < 0) {
+        if (hi <= p->y)
+            xs = p->x + (int32_t)((uint32_t)(p->y - hi) * (uint32_t)den / (uint32_t)-dy);
+        if (lo > q->y)
+            xe = p->x + (int32_t)((uint32_t)(p->y - lo) * (uint32_t)den / (uint32_t)-dy);
+    }
+    /* the columns whose centres lie in [p->x, q->x), near that part, on
+     * screen (a column either side to spare: each is tested exactly) */
+    c0 = zs_asr32((int32_t)p->x + 7, 4);
+    c1 = zs_asr32((int32_t)q->x + 7, 4) - 1;
+    if (zs_asr32(xs - 8, 4) > c0)
+        c0 = zs_asr32(xs - 8, 4);
+    if (zs_asr32(xe - 8, 4) + 1 < c1)
+        c1 = zs_asr32(xe - 8, 4) + 1;
+    if (c0 < 0)
+        c0 = 0;
+    if (c1 >= c->w)
+        c1 = c->w - 1;
+    for (col = c0; col <= c1; col++) {
+        int32_t xc = 16 * col + 8, ry, row;
+        int64_t Y;
+        uint32_t rem;
+        step_pair s;
+        Y = (int64_t)p->y * den + (int64_t)(xc - p->x) * dy; /* y * den */
+        if (xc < p->x || xc >= q->x || Y < (int64_t)lo * den || Y >= (int64_t)hi * den)
+            continue;
+        /* now 0 <= Y < 2^31: the centre above the crossing, and where the
+         * crossing lies below it */
+        ry = (int32_t)(((uint32_t)Y + 8u * (uint32_t)den) / (16u * (uint32_t)den)) - 1;
+        rem = (uint32_t)(Y - 8 * (int64_t)den - 16 * (int64_t)den * ry);
+        row = rem < 8u * (uint32_t)den ? ry : ry + 1;
+        s.px = xc;
+        s.py = 16 * ry + 8;
+        s.sx = 0;
+        s.sy = 16;
+        if (!edge_shown(r, c->memo, i, k, &s, (int32_t)(rem * 256u / (uint32_t)den), id_at(c, col, ry),
+                        id_at(c, col, ry + 1), open))
+            continue;
+        if (row == c->y)
+            c->flags[col] = 1;
+        else
+            c->pending[col] = 1;
+    }
+}
+
+/* The feature edges of record i (mask: bits 0-2 edge k drawn, bits 3-5 edge
+ * k open) crossed in row y's band. */
+static void record_lines(const zs_renderer *r, line_rows *c, uint16_t i, unsigned mask)
+{
+    const zs_vert *pool = r->priv.verts;
+    const zs_tri *t = &r->priv.tris[i];
+    int k;
+    for (k = 0; k < 3; k++) {
+        const zs_vert *p = &pool[t->v[k]], *q = &pool[t->v[k == 2 ? 0 : k + 1]];
+        int32_t dx = (int32_t)q->x - p->x, dy = (int32_t)q->y - p->y;
+        int open = (mask >> (3 + k)) & 1;
+        if (!((mask >> k) & 1))
+            continue;
+        if ((dy < 0 ? -dy : dy) >= (dx < 0 ? -dx : dx)) {
+            if (dy != 0)
+                cross_row(r, c, i, k, dy > 0 ? p : q, dy > 0 ? q : p, open);
+        } else {
+            cross_columns(r, c, i, k, dx > 0 ? p : q, dx > 0 ? q : p, open);
+        }
+    }
+}
+/* Where, between the centres of s (ids a at c0, b at c1, of two draws),
+ * the boundary between the draws lies, in 1/4096 of the step: where the
+ * nearer one's cover ends, or, where each covers both centres (they cut
+ * into each other), where their planes cross; -1 if the records are not
+ * found on the step. */
+static int32_t draw_cut(const zs_renderer *r, uint16_t a, uint16_t fa, uint16_t b, uint16_t fb,
+                        const step_pair *s)
+{
+    const zs_tri *t = r->priv.tris;
+    cover ca, cb;
+    int32_t ta, tb;
+    if (!tag_cover(r, fa, a, s, &ca) || !tag_cover(r, fb, b, s, &cb))
+        return -1;
+    ta = ca.hi;
+    tb = cb.lo;
+    if (ta >= STEP_ONE && tb <= 0) {
+        int64_t d0 = depth_at(r, &t[fa], s, 0) - depth_at(r, &t[fb], s, 0);
+        int64_t d1 = depth_at(r, &t[fa], s, STEP_ONE) - depth_at(r, &t[fb], s, STEP_ONE);
+        /* a is in front at c0 (d0 <= 0), b at c1 (d1 >= 0) */
+        if (d0 > 0 || d1 < 0 || d1 - d0 <= 0)
+            return STEP_ONE / 2;
+        return fraction((uint64_t)-d0, (uint64_t)(d1 - d0));
+    }
+    if (ta >= STEP_ONE) /* a reaches c1, b is in front there */
+        return tb;
+    if (tb <= 0) /* b reaches c0 */
+        return ta;
+    if (ta <= tb) /* a gap, covered by what no centre sees */
+        return (ta + tb) / 2;
+    return depth_at(r, &t[fa], s, (ta + tb) / 2) <= depth_at(r, &t[fb], s, (ta + tb) / 2) ? ta : tb;
+}
+
+/* Boundaries between draw calls that no feature edge gives (a surface
+ * cutting into another, an object sunk into the floor): where neighbouring
+ * centres see two draws and neither pixel has a line yet, the line goes on
+ * the pixel nearer the boundary. */
+static void draw_boundaries(const zs_renderer *r, line_rows *c)
+{
+    const int16_t *nrm = r->priv.tri_normal;
+    step_pair s;
+    int x;
+    s.py = 16 * c->y + 8;
+    s.sx = 16;
+    s.sy = 0;
+    for (x = 1; x < c->w; x++) {
+        uint16_t a = c->cur[x - 1], b = c->cur[x], fa, fb;
+        int32_t cut;
+        if (a == b || !a || !b || c->flags[x - 1] || c->flags[x])
+            continue;
+        fa = record_of(r, c->memo, a);
+        fb = record_of(r, c->memo, b);
+        if (fa >= r->priv.n_tris || fb >= r->priv.n_tris ||
+            nrm[4u * fa + 3u] == nrm[4u * fb + 3u])
+            continue;
+        s.px = 16 * x - 8;
+        cut = draw_cut(r, a, fa, b, fb, &s);
+        if (cut >= 0)
+            c->flags[cut < STEP_ONE / 2 ? x - 1 : x] = 1;
+    }
+    if (!c->below)
+        return;
+    s.sx = 0;
+    s.sy = 16;
+    for (x = 0; x < c->w; x++) {
+        uint16_t a = c->cur[x], b = c->below[x], fa, fb;
+        int32_t cut;
+        if (a == b || !a || !b || c->flags[x] || c->pending[x])
+            continue;
+        fa = record_of(r, c->memo, a);
+        fb = record_of(r, c->memo, b);
+        if (fa >= r->priv.n_tris || fb >= r->priv.n_tris ||
+            nrm[4u * fa + 3u] == nrm[4u * fb + 3u])
+            continue;
+        s.px = 16 * x + 8;
+        cut = draw_cut(r, a, fa, b, fb, &s);
+        if (cut >= 0) {
+            if (cut < STEP_ONE / 2)
+                c->flags[x] = 1;
+            else
+                c->pending[x] = 1;
+        }
+    }
+}
+
+/* A record's top and bottom rows, 1/16 px. */
+static int32_t rec_top(const zs_renderer *r, uint16_t i)
+{
+    const zs_vert *pool = r->priv.verts;
+    const uint16_t *v = r->priv.tris[i].v;
+    int32_t a = pool[v[0]].y, b = pool[v[1]].y, c = pool[v[2]].y;
+    return a < b ? (a < c ? a : c) : (b < c ? b : c);
+}
+
+static int32_t rec_bottom(const zs_renderer *r, uint16_t i)
+{
+    const zs_vert *pool = r->priv.verts;
+    const uint16_t *v = r->priv.tris[i].v;
+    int32_t a = pool[v[0]].y, b = pool[v[1]].y, c = pool[v[2]].y;
+    return a > b ? (a > c ? a : c) : (b > c ? b : c);
+}
+
+/* Heap sort of the records holding feature edges by their tops. */
+static void sift(const zs_renderer *r, uint16_t *a, uint32_t root, uint32_t n)
+{
+    for (;;) {
+        uint32_t c = 2u * root + 1u;
+        uint16_t t;
+        if (c >= n)
+            return;
+        if (c + 1u < n && rec_top(r, a[c + 1u]) > rec_top(r, a[c]))
+            c++;
+        if (rec_top(r, a[root]) >= rec_top(r, a[c]))
+            return;
+        t = a[root];
+        a[root] = a[c];
+        a[c] = t;
+        root = c;
+    }
+}
+
+void zs_lines_begin(zs_renderer *r)
+{
+    int64_t A;
+    uint16_t i, draw = 0, n = r->priv.n_tris, *head = r->priv.line_vert_head,
+                next_list = 0, *next = r->priv.line_next_rec;
+    uint16_t *list = r->priv.line_next_rec, *mask = list + r->cfg.max_triangles;
+    int16_t *nrm = r->priv.tri_normal;
+    int deg = r->shade.crease_deg ? r->shade.crease_deg : 30, k;
+    uint32_t end;
+    r->priv.crease_cos = zs_fx_cos_deg(ZS_FX(deg)) * 4096; /* Q16 -> Q28 */
+    r->priv.line_next = 0;
+    if (r->priv.depth_scale != 0) {
+        A = r->priv.depth_scale;
+    } else {
+        int64_t f = r->cam.far_z, nz = r->cam.near_z;
+        A = (f * ((int64_t)1 << 30)) / (f - nz);
+    }
+    r->priv.line_depth_a = A;
+    /* the records around each vertex, to find the one across an edge */
+    for (i = 0; i < r->priv.n_verts; i++)
+        head[i] = NO_RECORD;
+    for (i = 0; i < n; i++) {
+        const zs_tri *t = &r->priv.tris[i];
+        for (k = 0; k < 3; k++) {
+            next[3u * i + (unsigned)k] = head[t->v[k]];
+            head[t->v[k]] = i;
+        }
+    }
+    /* feature edges: bit k, edge k is one (a crease once, from the lower
+     * record); bit 3 + k, it has no record across (kept in the draw
+     * number's place until the links are done with) */
+    for (i = 0; i < n; i++) {
+        unsigned mk = 0;
+        for (k = 0; k < 3; k++) {
+            uint16_t j = neighbour(r, i, k);
+            if (j == NO_RECORD)
+                mk |= 9u << k;
+            else if (i < j && dot_q28(&nrm[4u * i], &nrm[4u * j]) < r->priv.crease_cos)
+                mk |= 1u << k;
+        }
+        nrm[4u * i + 3u] = (int16_t)mk;
+    }
+    for (i = 0; i < n; i++) {
+        unsigned mk = (unsigned)nrm[4u * i + 3u];
+        if (r->priv.draw_starts[i >> 3] & (1u << (i & 7u)))
+            draw++;
+        nrm[4u * i + 3u] = (int16_t)(draw & 0x7FFFu); /* draw number (wrapping) */
+        mask[i] = (uint16_t)mk;
+        if (mk)
+            list[next_list++] = i;
+    }
+    for (end = next_list / 2u; end-- > 0u;)
+        sift(r, list, end, next_list);
+    for (end = next_list; end-- > 1u;) {
+        uint16_t t = list[0];
+        list[0] = list[end];
+        list[end] = t;
+        sift(r, list, 0, end);
+    }
+    r->priv.line_feats = next_list;
+    r->priv.line_feat_next = 0;
+    r->priv.line_n_active = 0;
+}
+
+/* Flags of row y: what the row above left for it (line_pending) and the
+ * crossings of the feature edges in its band, on whichever of the two rows
+ * is nearer (the row below is rendered now); the flags the row below gets
+ * are left in line_pending. */
 void zs_lines_row(zs_renderer *r, int y, uint8_t *flags)
 {
     uint16_t *cur = r->priv.line_ids[0], *below = r->priv.line_ids[1];
+    uint16_t *list = r->priv.line_next_rec, *mask = list + r->cfg.max_triangles,
+             *act = mask + r->cfg.max_triangles;
     uint8_t *pending = r->priv.line_pending;
-    int w = r->cfg.width, x;
-    step_pair s;
+    int w = r->cfg.width, h = r->cfg.height;
+    int32_t hi;
+    uint16_t j;
+    line_rows c;
     if (r->priv.line_next <= y) { /* not rendered ahead: no row above */
         zs_visible_row(r, y, (uint8_t *)cur);
         memset(pending, 0, (size_t)w);
     }
     memcpy(flags, pending, (size_t)w);
     memset(pending, 0, (size_t)w);
-    s.py = 16 * y + 8;
-    s.sx = 16;
-    s.sy = 0;
-    for (x = 1; x < w; x++)
-        if (cur[x - 1] != cur[x]) {
-            int e;
-            s.px = 16 * x - 8;
-            e = pair_edge(r, cur[x - 1], cur[x], &s);
-            if (e)
-                flags[x - 2 + e] = 1;
+    c.cur = cur;
+    c.below = y + 1 < h ? below : NULL;
+    c.flags = flags;
+    c.pending = pending;
+    c.y = y;
+    c.w = w;
+    c.h = h;
+    memset(c.memo, 0, sizeof c.memo); /* tag 0 is the background, never asked */
+    if (c.below)
+        zs_visible_row(r, y + 1, (uint8_t *)below);
+    /* records join as their tops reach the band, leave once their bottoms
+     * are above it */
+    hi = c.below ? 16 * y + 24 : 16 * h;
+    while (r->priv.line_feat_next < r->priv.line_feats &&
+           rec_top(r, list[r->priv.line_feat_next]) < hi)
+        act[r->priv.line_n_active++] = list[r->priv.line_feat_next++];
+    for (j = 0; j < r->priv.line_n_active;) {
+        uint16_t i = act[j];
+        if (rec_bottom(r, i) < (y == 0 ? 1 : 16 * y + 8)) { /* cross_columns' band */
+            act[j] = act[--r->priv.line_n_active];
+            continue;
         }
-    if (y + 1 >= (int)r->cfg.height) {
+        record_lines(r, &c, i, mask[i]);
+        j++;
+    }
+    /* more than one draw: the first and last records' draw numbers differ */
+    if (r->priv.n_tris > 1 &&
+        r->priv.tri_normal[3] != r->priv.tri_normal[4u * (r->priv.n_tris - 1u) + 3u])
+        draw_boundaries(r, &c);
+    if (!c.below) {
         r->priv.line_next = y + 1;
         return;
     }
-    zs_visible_row(r, y + 1, (uint8_t *)below);
-    s.sx = 0;
-    s.sy = 16;
-    for (x = 0; x < w; x++)
-        if (cur[x] != below[x]) {
-            int e;
-            s.px = 16 * x + 8;
-            e = pair_edge(r, cur[x], below[x], &s);
-            if (e == 1)
-                flags[x] = 1;
-            else if (e == 2)
-                pending[x] = 1;
-        }
     r->priv.line_ids[0] = below;
     r->priv.line_ids[1] = cur;
     r->priv.line_next = y + 2;

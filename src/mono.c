@@ -79,7 +79,21 @@ static void pack_page(const uint8_t *g, const uint8_t *t, uint8_t *out, int w, i
             out[x] = (uint8_t)((out[x] & keep) | (off ^ ((0u - on) & bit)));
         }
     } else {
-        for (x = 0; x < w; x++)
+        x = 0;
+#ifdef ZS_WORD_STORES
+        if ((((uintptr_t)g | (uintptr_t)out) & 3u) == 0) {
+            /* four pixels a word: each byte of g is 0 or 1, so shifted to
+             * the row's bit it stays within its byte, in any byte order */
+            const uint32_t ones = 0x01010101u;
+            const zs_word_alias *gw = (const zs_word_alias *)(const void *)g;
+            zs_word_alias *ow = (zs_word_alias *)(void *)out;
+            uint32_t keepw = keep * ones, flipw = inv ? ones : 0u;
+            unsigned sh = (unsigned)(y & 7);
+            for (; x + 4 <= w; x += 4)
+                ow[x >> 2] = (ow[x >> 2] & keepw) | ((gw[x >> 2] ^ flipw) << sh);
+        }
+#endif
+        for (; x < w; x++)
             out[x] = (uint8_t)((out[x] & keep) | ((g[x] ^ inv) ? bit : 0));
     }
 }
@@ -103,13 +117,17 @@ static void pack_msb(const uint8_t *g, const uint8_t *t, uint8_t *out, int w, un
         for (; x < w; x++)
             acc = (acc << 1) | ((unsigned)(g[x] > t[x & 7]) ^ inv);
     } else {
-        for (x = 0; x < w; x++) {
-            acc = (acc << 1) | (g[x] ^ inv);
-            if ((x & 7) == 7) {
-                out[x >> 3] = (uint8_t)acc;
-                acc = 0;
-            }
+        unsigned flip = inv ? 0xFFu : 0u;
+        for (x = 0; x + 8 <= w; x += 8) { /* each byte of g is 0 or 1 */
+            const uint8_t *p = g + x;
+            acc = (unsigned)p[0] << 7 | (unsigned)p[1] << 6 | (unsigned)p[2] << 5 |
+                  (unsigned)p[3] << 4 | (unsigned)p[4] << 3 | (unsigned)p[5] << 2 |
+                  (unsigned)p[6] << 1 | (unsigned)p[7];
+            out[x >> 3] = (uint8_t)(acc ^ flip);
         }
+        acc = 0;
+        for (; x < w; x++)
+            acc = (acc << 1) | (g[x] ^ inv);
     }
     if (w & 7)
         out[w >> 3] = (uint8_t)(acc << (8 - (w & 7)));

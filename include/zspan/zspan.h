@@ -706,6 +706,9 @@ typedef struct zs_renderer_private {
                                          corner's vertex */
     int32_t line_next;                /* the next row to render (rows are rendered one
                                          ahead of the output) */
+    uint16_t line_feats;              /* records holding feature edges, sorted by top */
+    uint16_t line_feat_next;          /* the next of them to join the active ones */
+    uint16_t line_n_active;           /* records whose feature edges reach the row */
 } zs_renderer_private;
 
 /* Holds the arena's pools and the frame state. The struct is public so it

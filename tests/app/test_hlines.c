@@ -5,10 +5,13 @@
  *
  * Random scenes of closed and open meshes (boxes, faceted spheres, prisms,
  * folded sheets), each its own group, placed so that they occlude each other
- * without cutting into each other, some crossing the near plane. The test
- * finds the feature edges itself (by brute force over the triangles) and
- * samples each every 1/64 px on screen; each sample is ray cast against every
- * front face. Then:
+ * without cutting into each other, some crossing the near plane; and scenes
+ * of closed meshes that cut into one another, where the lines the meshes
+ * meet along are drawn too. The test finds the feature edges itself (by
+ * brute force over the triangles), and the meeting lines (each front face
+ * of one group cut by the plane of each of another's, the piece clipped to
+ * that triangle), and samples each every 1/64 px on screen; each sample is
+ * ray cast against every front face. Then:
  *  - a visible sample lies on an output segment, unless it is within 1/16 px
  *    of a visibility change along its edge;
  *  - a hidden sample lies on no output segment, except within 1/16 px of the
@@ -34,6 +37,8 @@
 #define STEP (1.0 / 64)
 #define NEAR 0.5
 #define CELL 4
+#define NCUT 6 /* scenes of meshes cutting into one another */
+#define FEAT_CAP (4 * 12000)
 
 static uint64_t rs;
 static double urand(void)
@@ -157,6 +162,24 @@ static void random_scene(scene *s, int k)
     }
 }
 
+/* Two to four closed meshes, each overlapping the one before by about a
+ * third of its size. */
+static void cutting_scene(scene *s)
+{
+    double c[3] = {uni(-1, 1), uni(-1, 1), -uni(5, 7)};
+    int n = 2 + (int)(urand() * 3);
+    s->nv = s->nt = 0;
+    for (int d = 0; d < n; d++) {
+        if (d > 0) {
+            double a = uni(0, 2 * PI), b = uni(-0.6, 0.6), r = uni(1.0, 1.4);
+            c[0] += r * cos(a) * cos(b);
+            c[1] += r * sin(a) * cos(b);
+            c[2] += r * sin(b);
+        }
+        add_mesh(s, (int)(urand() * 3), d, c[0], c[1], c[2]);
+    }
+}
+
 /* ---- the oracle ---- */
 
 static void sub(const double *a, const double *b, double *o)
@@ -213,6 +236,62 @@ static int hides(const scene *s, size_t t, const double *P)
     return tt > 1e-9 && tt < 1 - 1e-9 && tt * -P[2] >= NEAR;
 }
 
+/* Where front faces t and u meet: t's edges cut by u's plane give a
+ * segment in that plane, clipped to u by u's edges' inward normals. */
+static int meeting(const scene *s, size_t t, size_t u, double *A, double *B)
+{
+    const double *q[3], *p[3];
+    double nu[3], d[3], P[2][3];
+    int np = 0;
+    for (int k = 0; k < 3; k++) {
+        p[k] = s->pos + 3 * s->idx[3 * t + k];
+        q[k] = s->pos + 3 * s->idx[3 * u + k];
+    }
+    nrm(s, u, nu);
+    for (int k = 0; k < 3; k++) {
+        double w[3];
+        sub(p[k], q[0], w);
+        d[k] = dt(w, nu);
+    }
+    for (int k = 0; k < 3 && np < 2; k++) {
+        int j = (k + 1) % 3;
+        if ((d[k] > 0) == (d[j] > 0)) continue;
+        double f = d[k] / (d[k] - d[j]);
+        for (int c = 0; c < 3; c++) P[np][c] = p[k][c] + f * (p[j][c] - p[k][c]);
+        np++;
+    }
+    if (np < 2) return 0;
+    double lo = 0, hi = 1, D[3];
+    sub(P[1], P[0], D);
+    for (int k = 0; k < 3; k++) {
+        double e[3], in[3], w[3];
+        sub(q[(k + 1) % 3], q[k], e);
+        crs(nu, e, in); /* points into u */
+        sub(P[0], q[k], w);
+        double a = dt(in, w), b = dt(in, D); /* inside where a + b t >= 0 */
+        if (b == 0) {
+            if (a < 0) return 0;
+        } else if (b > 0) {
+            if (-a / b > lo) lo = -a / b;
+        } else if (-a / b < hi) {
+            hi = -a / b;
+        }
+    }
+    if (hi - lo < 1e-9) return 0;
+    for (int c = 0; c < 3; c++) {
+        A[c] = P[0][c] + lo * D[c];
+        B[c] = P[0][c] + hi * D[c];
+    }
+    return 1;
+}
+
+typedef struct feat {
+    double A[3], B[3];
+    size_t i;
+    long other;
+    uint32_t a, b;
+} feat;
+
 /* distance from (x, y) to the segment and the parameter of the foot */
 static double seg_dist(const zs_hl_seg *g, double x, double y, double *endd)
 {
@@ -239,8 +318,13 @@ static void test_vs_raycast(void **state)
     long samples = 0, vis_total = 0, checked_ends = 0;
     double worst_end = 0;
     rs = 0x5EED0016;
-    for (int k = 0; k < 16; k++) {
-        random_scene(s, k);
+    feat *fl = malloc(FEAT_CAP * sizeof *fl);
+    long meeting_total = 0;
+    for (int k = 0; k < 16 + NCUT; k++) {
+        if (k < 16)
+            random_scene(s, k);
+        else
+            cutting_scene(s);
         zs_hl_result r;
         assert_int_equal(zs_hl_compute(&v, s->pos, s->nv, s->idx, s->group, s->nt, &r), 0);
         assert_true(r.n > 10);
@@ -259,7 +343,8 @@ static void test_vs_raycast(void **state)
                     cell[c][cell_n[c]++] = g;
                 }
         }
-        /* brute-force feature edges */
+        /* brute-force feature edges, then the meeting lines */
+        size_t nfl = 0;
         for (size_t i = 0; i < s->nt; i++)
             for (int e = 0; e < 3; e++) {
                 uint32_t a = s->idx[3 * i + e], b = s->idx[3 * i + (e + 1) % 3];
@@ -278,10 +363,36 @@ static void test_vs_raycast(void **state)
                     nrm(s, (size_t)other, n2);
                     feat = dt(n1, n2) < cos(30 * PI / 180);
                 } else feat = 0;
-                if (!feat) continue;
+                if (!feat || nfl == FEAT_CAP) continue;
+                memcpy(fl[nfl].A, s->pos + 3 * a, sizeof fl[nfl].A);
+                memcpy(fl[nfl].B, s->pos + 3 * b, sizeof fl[nfl].B);
+                fl[nfl].i = i;
+                fl[nfl].other = other;
+                fl[nfl].a = a;
+                fl[nfl].b = b;
+                nfl++;
+            }
+        size_t nedges = nfl;
+        for (size_t i = 0; i < s->nt; i++)
+            for (size_t j = 0; j < s->nt; j++) {
+                if (nfl == FEAT_CAP || s->group[i] == s->group[j] || !front(s, i) || !front(s, j) ||
+                    !meeting(s, i, j, fl[nfl].A, fl[nfl].B))
+                    continue;
+                fl[nfl].i = i;
+                fl[nfl].other = (long)j;
+                fl[nfl].a = (uint32_t)i;
+                fl[nfl].b = (uint32_t)j;
+                nfl++;
+            }
+        meeting_total += nfl - nedges;
+        for (size_t fk = 0; fk < nfl; fk++) {
+            {
+                size_t i = fl[fk].i;
+                long other = fl[fk].other;
+                uint32_t a = fl[fk].a, b = fl[fk].b;
                 double A[3], B[3], ax, ay, bx, by;
-                memcpy(A, s->pos + 3 * a, sizeof A);
-                memcpy(B, s->pos + 3 * b, sizeof B);
+                memcpy(A, fl[fk].A, sizeof A);
+                memcpy(B, fl[fk].B, sizeof B);
                 if (A[2] > -v.near_z && B[2] > -v.near_z) continue;
                 if (A[2] > -v.near_z || B[2] > -v.near_z) { /* cut at the near plane */
                     double *in = A[2] > -v.near_z ? A : B, *o = in == A ? B : A;
@@ -348,11 +459,14 @@ static void test_vs_raycast(void **state)
                 }
                 free(vis); free(sx); free(sy); free(in_scr);
             }
+        }
         zs_hl_free(&r);
     }
-    print_message("hlines: 16 scenes, %ld edge samples (%ld visible) every 1/64 px; hidden "
-                  "samples on a segment: %ld, at most %.4f px from its end\n",
-                  samples, vis_total, checked_ends, worst_end);
+    print_message("hlines: 16 scenes and %d of meshes cutting into one another (%ld meeting "
+                  "segments), %ld edge samples (%ld visible) every 1/64 px; hidden samples on a "
+                  "segment: %ld, at most %.4f px from its end\n",
+                  NCUT, meeting_total, samples, vis_total, checked_ends, worst_end);
+    free(fl);
     for (int c = 0; c < GW * GH; c++) free(cell[c]);
     free(cell); free(cell_n); free(cell_cap);
     free(s);

@@ -290,7 +290,10 @@ static uint32_t gather(zs_renderer *r, int32_t y, int32_t n, int fill_pool)
                 continue;
             if (fill_pool) {
                 if (count >= cap) {
-                    r->stats.records_skipped++; /* capacity policy: left out of the band */
+                    /* capacity policy: left out of the band; counted in the
+                     * first band it reaches, as drawn records are */
+                    if (b >= y || first)
+                        r->stats.records_skipped++;
                     continue;
                 }
                 zs_rec_planes(r, ti, &v, v.row0, &r->priv.active[count], &r->priv.aplane[count],

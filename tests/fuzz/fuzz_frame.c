@@ -873,9 +873,10 @@ static void run_frame(zs_renderer *r, const scene *s, zs_visibility mode, int id
     FZ_CHECK(f->rows == (uint32_t)o->nrendered, "stats.rows %u, %d rendered", f->rows,
              o->nrendered);
     if (mode == ZS_MODE_WARNOCK) {
-        /* Warnock counts a record skipped in every band whose pool it missed
-         * (warnock.c gather), so skipped and drawn can overlap */
-        FZ_CHECK(f->tris_drawn <= f->records, "warnock drawn %u > records %u", f->tris_drawn,
+        /* Warnock counts a record drawn or skipped in the first band it
+         * reaches (warnock.c gather): never both */
+        FZ_CHECK(f->tris_drawn + f->records_skipped <= f->records,
+                 "warnock drawn %u + skipped %u > records %u", f->tris_drawn, f->records_skipped,
                  f->records);
         return;
     }

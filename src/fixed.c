@@ -19,6 +19,74 @@ static unsigned clz64(uint64_t v)
 #endif
 }
 
+#ifdef ZS_SPLIT_MUL
+/* Cortex-M0 has no divide instruction: a 32/16 quotient by libgcc's
+ * __aeabi_uidivmod costs about 90 instructions, and the long division below
+ * needs two. There both digits divide by the same d = v >> 16 in [2^15, 2^16),
+ * so d's reciprocal is made once, from a table and one Newton step, and the
+ * digits come from products (16 x 16 bits each: single multiplies), then
+ * exact corrections: the results are those of the divisions. */
+
+/* 2^31 / (2^15 + 256 i + 128), rounded: the reciprocal at the middle of the
+ * i-th run of 256 divisors (relative error below 2^-8 over the run). */
+static const uint16_t k_recip15[128] = {
+    65281u, 64777u, 64281u, 63792u, 63310u, 62836u, 62369u, 61909u,
+    61455u, 61008u, 60568u, 60133u, 59705u, 59283u, 58867u, 58457u,
+    58053u, 57654u, 57260u, 56872u, 56489u, 56111u, 55738u, 55370u,
+    55007u, 54649u, 54295u, 53946u, 53601u, 53261u, 52925u, 52593u,
+    52265u, 51942u, 51622u, 51306u, 50995u, 50686u, 50382u, 50081u,
+    49784u, 49490u, 49200u, 48913u, 48630u, 48349u, 48072u, 47798u,
+    47528u, 47260u, 46995u, 46733u, 46474u, 46218u, 45965u, 45714u,
+    45467u, 45222u, 44979u, 44739u, 44502u, 44267u, 44035u, 43805u,
+    43577u, 43352u, 43129u, 42908u, 42690u, 42474u, 42260u, 42048u,
+    41838u, 41631u, 41425u, 41222u, 41020u, 40820u, 40623u, 40427u,
+    40233u, 40041u, 39851u, 39662u, 39476u, 39291u, 39108u, 38926u,
+    38746u, 38568u, 38392u, 38217u, 38044u, 37872u, 37702u, 37533u,
+    37366u, 37200u, 37036u, 36873u, 36712u, 36552u, 36393u, 36236u,
+    36080u, 35926u, 35772u, 35620u, 35470u, 35320u, 35172u, 35026u,
+    34880u, 34735u, 34592u, 34450u, 34309u, 34169u, 34031u, 33893u,
+    33757u, 33622u, 33487u, 33354u, 33222u, 33091u, 32961u, 32832u,
+};
+
+/* floor(2^31 / d) for d in [2^15, 2^16) (at most 2^16). */
+static uint32_t recip15(uint32_t d)
+{
+    uint32_t x = k_recip15[(d >> 8) - 128u], p;
+    /* one Newton step x += x (2^31 - d x) / 2^31: |2^31 - d x| < 2^23, so
+     * e / 2^9 fits 15 bits and x * (e / 2^9) stays below 2^31 */
+    uint32_t dx = d * x; /* within 2^31 +- 2^23 */
+    int32_t e = dx <= 0x80000000u ? (int32_t)(0x80000000u - dx) : -(int32_t)(dx - 0x80000000u);
+    int32_t c = (int32_t)x * zs_asr32(e, 9);
+    x = (uint32_t)((int32_t)x + zs_asr32(c, 22));
+    /* now within a few units of the floor: exact by the remainder */
+    p = d * x;
+    while (p > 0x80000000u) {
+        x--;
+        p -= d;
+    }
+    while (0x80000000u - p >= d) {
+        x++;
+        p += d;
+    }
+    return x;
+}
+
+/* floor(n / d) for any n, d in [2^15, 2^16), inv = floor(2^31 / d); the
+ * remainder in *rem. The product estimate is at most 3 short of the
+ * quotient (inv is short of 2^31 / d by under 1, n < 2^32). */
+static uint32_t div_by_recip(uint32_t n, uint32_t d, uint32_t inv, uint32_t *rem)
+{
+    uint32_t q = (((n >> 16) * inv) + (((n & 0xFFFFu) * inv) >> 16)) >> 15;
+    uint32_t r = n - q * d;
+    while (r >= d) {
+        r -= d;
+        q++;
+    }
+    *rem = r;
+    return q;
+}
+#endif
+
 /* Long division of the 64-bit (nh, nl) by v (top bit set, nh < v) in two
  * base-2^16 digits, each estimated from v's high half and corrected at most
  * twice (the classic schoolbook bound): 32-bit divisions and products only,
@@ -27,8 +95,13 @@ uint32_t zs_udiv64_32(uint32_t nh, uint32_t nl, uint32_t v)
 {
     uint32_t vh = v >> 16, vl = v & 0xFFFFu, n1 = nl >> 16, n0 = nl & 0xFFFFu;
     uint32_t qh, ql, r, rem;
+#ifdef ZS_SPLIT_MUL
+    const uint32_t inv = recip15(vh);
+    qh = div_by_recip(nh, vh, inv, &r);
+#else
     qh = nh / vh;
     r = nh - qh * vh;
+#endif
     while (qh > 0xFFFFu || qh * vl > ((r << 16) | n1)) {
         qh--;
         r += vh;
@@ -37,8 +110,12 @@ uint32_t zs_udiv64_32(uint32_t nh, uint32_t nl, uint32_t v)
     }
     /* the partial remainder (nh, n1) - qh * v is below v: mod 2^32 is exact */
     rem = ((nh << 16) | n1) - qh * v;
+#ifdef ZS_SPLIT_MUL
+    ql = div_by_recip(rem, vh, inv, &r);
+#else
     ql = rem / vh;
     r = rem - ql * vh;
+#endif
     while (ql > 0xFFFFu || ql * vl > ((r << 16) | n0)) {
         ql--;
         r += vh;

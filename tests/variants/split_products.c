@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* The products Cortex-M0 builds form from 32-bit halves (zs_mul64_small,
  * zs_umul32, zs_smul32 with ZS_SPLIT_PRODUCTS) must equal plain 64-bit
- * products, and a core built with them must render what the plain core does.
+ * products, zs_udiv64_32 (by a reciprocal there) the 64-bit quotient, and a
+ * core built with them must render what the plain core does.
  *
  * Built twice (mk/variants.mk): against the core compiled as usual and
  * compiled with -DZS_SPLIT_PRODUCTS (this file too). Each build
@@ -68,6 +69,26 @@ static void check_helpers(void)
         check(zs_umul32(u, v) == (uint64_t)u * v, "zs_umul32", (long long)u, (long long)v);
         check(zs_umul32(0xFFFFFFFFu, v) == 0xFFFFFFFFull * v, "zs_umul32", -1, (long long)v);
         check(zs_smul32(s, t) == (int64_t)s * t, "zs_smul32", s, t);
+    }
+    /* zs_udiv64_32 (on Cortex-M0 by a reciprocal of v's high half): every
+     * high half of the divisor, then random dividends and divisors */
+    for (k = 0; k < (1 << 15); k++) {
+        uint32_t v = ((uint32_t)(0x8000 + k) << 16) | (uint32_t)(rnd() & 0xFFFFu);
+        uint32_t nh = (uint32_t)(rnd() % v), nl = (uint32_t)rnd();
+        uint64_t n = ((uint64_t)nh << 32) | nl;
+        check(zs_udiv64_32(nh, nl, v) == (uint32_t)(n / v), "zs_udiv64_32", (long long)nh,
+              (long long)v);
+        check(zs_udiv64_32(v - 1u, 0xFFFFFFFFu, v) == (uint32_t)((((uint64_t)(v - 1u) << 32) |
+                                                                 0xFFFFFFFFu) / v),
+              "zs_udiv64_32 (largest dividend)", (long long)v, 0);
+        check(zs_udiv64_32(0, nl, v) == nl / v, "zs_udiv64_32 (nh 0)", (long long)nl, (long long)v);
+    }
+    for (k = 0; k < 2000000; k++) {
+        uint32_t v = (uint32_t)rnd() | 0x80000000u;
+        uint32_t nh = (uint32_t)(rnd() % v), nl = (uint32_t)rnd();
+        uint64_t n = ((uint64_t)nh << 32) | nl;
+        check(zs_udiv64_32(nh, nl, v) == (uint32_t)(n / v), "zs_udiv64_32", (long long)nh,
+              (long long)v);
     }
 }
 

@@ -13,7 +13,7 @@ DEB_PACKAGES += librsvg2-bin
 AREA_TEST_SIM := $(BUILD)/tests/tools/test_area_sim
 TEST_SUITES += $(AREA_TEST_SIM)
 
-$(AREA_TEST_SIM): tests/tools/test_area_sim.c tests/tools/sim_run.h $(SIM) | deps
+$(AREA_TEST_SIM): tests/tools/test_area_sim.c tests/tools/sim_run.h tests/tools/run_cmd.h $(SIM) | deps
 	@mkdir -p $(@D)
 	$(CC) $(CLI_TEST_CFLAGS) -o $@ $< $(CLI_TEST_LIBS)
 

@@ -30,11 +30,11 @@ CLI_TEST_LIBS = $(shell $(PKG_CONFIG) --libs libpng 2>/dev/null || echo -lpng) $
 TEST_SUITES += $(CLI_TEST_SIM) $(CLI_TEST_MODELS) $(CLI_TEST_README)
 TEST_TARGETS += test-fuzz-cli-smoke
 
-$(CLI_TEST_SIM): tests/tools/test_sim.c tests/tools/sim_run.h $(SIM) $(BUILD)/zspan-meshc | deps
+$(CLI_TEST_SIM): tests/tools/test_sim.c tests/tools/sim_run.h tests/tools/run_cmd.h $(SIM) $(BUILD)/zspan-meshc | deps
 	@mkdir -p $(@D)
 	$(CC) $(CLI_TEST_CFLAGS) -o $@ $< $(CLI_TEST_LIBS)
 
-$(CLI_TEST_MODELS): tests/tools/test_sim_models.c tests/tools/sim_run.h $(SIM) | deps
+$(CLI_TEST_MODELS): tests/tools/test_sim_models.c tests/tools/sim_run.h tests/tools/run_cmd.h $(SIM) | deps
 	@mkdir -p $(@D)
 	$(CC) $(CLI_TEST_CFLAGS) -o $@ $< $(CLI_TEST_LIBS)
 

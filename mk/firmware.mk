@@ -242,7 +242,7 @@ TOOLS_TEST_GEN_SRCS := $(TOOLS_TEST_GEN)/t_known.c $(TOOLS_TEST_GEN)/t_known_nc.
                        $(TOOLS_TEST_GEN)/t_sphere.c
 $(TOOLS_TEST_GEN_SRCS:.c=.h): %.h: %.c ;
 
-$(TOOLS_TEST): tests/tools/test_meshc.c $(TOOLS_TEST_GEN_SRCS) $(TOOLS_TEST_GEN_SRCS:.c=.h) \
+$(TOOLS_TEST): tests/tools/test_meshc.c tests/tools/run_cmd.h $(TOOLS_TEST_GEN_SRCS) $(TOOLS_TEST_GEN_SRCS:.c=.h) \
                $(MESHC) $(ASAN_LIB) | deps
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) -Wconversion -D_POSIX_C_SOURCE=200809L -I$(TOOLS_TEST_GEN) \

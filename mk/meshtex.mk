@@ -34,7 +34,7 @@ $(TOOLS_TEST_GEN)/t_texbsp.c: tests/tools/data/tex_planes.obj $(MESHC) mk/meshte
 	    --texture-size 16 -o $(basename $@) $<
 MESHTEX_GEN_SRCS := $(TOOLS_TEST_GEN)/t_duck.c $(TOOLS_TEST_GEN)/t_texbsp.c
 $(MESHTEX_GEN_SRCS:.c=.h): %.h: %.c ;
-$(MESHTEX_TEST): tests/tools/test_meshc_tex.c $(MESHTEX_GEN_SRCS) $(MESHTEX_GEN_SRCS:.c=.h) \
+$(MESHTEX_TEST): tests/tools/test_meshc_tex.c tests/tools/run_cmd.h $(MESHTEX_GEN_SRCS) $(MESHTEX_GEN_SRCS:.c=.h) \
                  $(MESHC) $(SIM) $(ASAN_LIB) | deps
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) -Wconversion -D_POSIX_C_SOURCE=200809L -I$(TOOLS_TEST_GEN) \

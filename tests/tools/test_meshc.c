@@ -33,16 +33,8 @@
 #include "t_known.h"
 #include "t_known_nc.h"
 #include "t_sphere.h"
+#include "run_cmd.h"
 
-#ifndef MESHC
-#define MESHC "build/zspan-meshc"
-#endif
-#ifndef ASSIMP_MODELS
-#define ASSIMP_MODELS "/usr/share/assimp/models"
-#endif
-#ifndef TOOLS_DATA
-#define TOOLS_DATA "tests/tools/data"
-#endif
 
 /* The source of known.obj (faces as written, 1-based). */
 static const double known_v[7][3] = {
@@ -53,39 +45,6 @@ static const int known_faces[3][4] = {{1, 2, 3, 4}, {7, 4, 5, 0}, {2, 6, 3, 0}};
 
 /* ---- helpers ----------------------------------------------------------- */
 
-typedef struct run_result {
-    int exited;   /* 1 if it exited normally */
-    int status;   /* exit status */
-    char out[8192];
-} run_result;
-
-static void run(run_result *res, const char *fmt, ...)
-{
-    char cmd[2048];
-    va_list ap;
-    FILE *p;
-    size_t n = 0;
-    int st;
-    va_start(ap, fmt);
-    vsnprintf(cmd, sizeof cmd, fmt, ap);
-    va_end(ap);
-    strncat(cmd, " 2>&1", sizeof cmd - strlen(cmd) - 1);
-    p = popen(cmd, "r");
-    assert_non_null(p);
-    while (n + 1 < sizeof res->out) {
-        size_t got = fread(res->out + n, 1, sizeof res->out - 1 - n, p);
-        if (got == 0)
-            break;
-        n += got;
-    }
-    res->out[n] = 0;
-    /* drain */
-    while (fgetc(p) != EOF) {
-    }
-    st = pclose(p);
-    res->exited = WIFEXITED(st);
-    res->status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-}
 
 static double model_coord(const zs_mesh *m, unsigned v, int axis)
 {

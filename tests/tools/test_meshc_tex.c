@@ -38,53 +38,11 @@
 
 #include "t_duck.h"
 #include "t_texbsp.h"
+#include "run_cmd.h"
 
-#ifndef MESHC
-#define MESHC "build/zspan-meshc"
-#endif
-#ifndef SIM
-#define SIM "build/zspan-sim"
-#endif
-#ifndef ASSIMP_MODELS
-#define ASSIMP_MODELS "/usr/share/assimp/models"
-#endif
-#ifndef TOOLS_DATA
-#define TOOLS_DATA "tests/tools/data"
-#endif
 
 /* ---- helpers ----------------------------------------------------------- */
 
-typedef struct run_result {
-    int exited, status;
-    char out[8192];
-} run_result;
-
-static void run(run_result *res, const char *fmt, ...)
-{
-    char cmd[4096];
-    va_list ap;
-    FILE *p;
-    size_t n = 0;
-    int st;
-    va_start(ap, fmt);
-    vsnprintf(cmd, sizeof cmd, fmt, ap);
-    va_end(ap);
-    strncat(cmd, " 2>&1", sizeof cmd - strlen(cmd) - 1);
-    p = popen(cmd, "r");
-    assert_non_null(p);
-    while (n + 1 < sizeof res->out) {
-        size_t got = fread(res->out + n, 1, sizeof res->out - 1 - n, p);
-        if (got == 0)
-            break;
-        n += got;
-    }
-    res->out[n] = 0;
-    while (fgetc(p) != EOF) {
-    }
-    st = pclose(p);
-    res->exited = WIFEXITED(st);
-    res->status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-}
 
 static void expect_ok(const char *what, const run_result *res)
 {

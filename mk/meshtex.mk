@@ -63,7 +63,7 @@ MESHTEX_LLVMPIPE := $(BUILD)/tests/tools/test_meshc_llvmpipe
 MESHTEX_ZT_OBJS := $(patsubst tests/core/common/%.c,$(BUILD)/tests/core/common/%.o,\
                      $(sort $(wildcard tests/core/common/*.c)))
 TEST_SUITES += $(MESHTEX_LLVMPIPE)
-$(MESHTEX_LLVMPIPE): tests/tools/test_meshc_llvmpipe.c $(TOOLS_TEST_GEN)/t_duck.c \
+$(MESHTEX_LLVMPIPE): tests/tools/test_meshc_llvmpipe.c tests/core/common/zt_gl.h $(TOOLS_TEST_GEN)/t_duck.c \
                      $(TOOLS_TEST_GEN)/t_duck.h $(MESHTEX_ZT_OBJS) $(ASAN_LIB) | deps
 	@mkdir -p $(@D)
 	$(CC) $(CORE_TEST_CFLAGS) -I$(TOOLS_TEST_GEN) -o $@ $< $(TOOLS_TEST_GEN)/t_duck.c \

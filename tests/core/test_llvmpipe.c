@@ -23,6 +23,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "zt_gl.h"
+
 #define W 128
 #define H 96
 #define NEAR_FX (ZS_FX(1) / 4)
@@ -89,46 +91,8 @@ static void ctx_init(zt_ctx *c)
  * coordinates of their mesh triangles. */
 static void gl_draw(const zt_recs *recs, const zt_scene *s, const int16_t *uv, int clamp)
 {
-    double A = (double)FAR_FX / (double)(FAR_FX - NEAR_FX);
-    GLuint tex;
-    glViewport(0, 0, W, H);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
-    glClearColor(0, 0, 0, 0);
-    glClearDepth(1.0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_CULL_FACE);
-    glGenTextures(1, &tex);
-    glBindTexture(GL_TEXTURE_2D, tex);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, TW, TH, 0, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, g_tex);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, clamp ? GL_CLAMP_TO_EDGE : GL_REPEAT);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, clamp ? GL_CLAMP_TO_EDGE : GL_REPEAT);
-    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-    glHint(GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST);
-    glEnable(GL_TEXTURE_2D);
-    glBegin(GL_TRIANGLES);
-    for (size_t k = 0; k < recs->n; k++) {
-        const zt_rec *r = &recs->v[k];
-        const uint16_t *idx = s->idx + 3u * (r->tag - 1u);
-        for (int i = 0; i < 3; i++) {
-            double z = r->z[i] / 1073741824.0;
-            double w = 1.0 / (A - z); /* any scale: only ratios matter */
-            double xn = r->xy[2 * i] / 16.0 / W * 2 - 1, yn = 1 - r->xy[2 * i + 1] / 16.0 / H * 2;
-            glTexCoord2f((float)(uv[2 * idx[i]] / (double)ZS_UV_ONE),
-                         (float)(uv[2 * idx[i] + 1] / (double)ZS_UV_ONE));
-            glVertex4f((float)(xn * w), (float)(yn * w), (float)((2 * z - 1) * w), (float)w);
-        }
-    }
-    glEnd();
-    glFinish();
-    glDeleteTextures(1, &tex);
+    zt_gl_draw_records(recs, s->idx, uv, g_tex, TW, TH, W, H,
+                       (double)FAR_FX / (double)(FAR_FX - NEAR_FX), clamp);
 }
 
 static int texel_dist(int a, int b, int n, int clamp)

@@ -24,6 +24,7 @@
 #include <string.h>
 
 #include "t_duck.h"
+#include "zt_gl.h"
 
 #define W 128
 #define H 96
@@ -69,45 +70,8 @@ static int teardown(void **state)
 /* The records with the duck's uvs: record tag t is mesh triangle t - 1. */
 static void gl_frame(const zt_recs *recs)
 {
-    const double a = (double)FAR_FX / (double)(FAR_FX - NEAR_FX);
-    GLuint tex;
-    glViewport(0, 0, W, H);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
-    glClearColor(0, 0, 0, 0);
-    glClearDepth(1.0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_CULL_FACE);
-    glGenTextures(1, &tex);
-    glBindTexture(GL_TEXTURE_2D, tex);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, TW, TH, 0, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, g_code);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-    glHint(GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST);
-    glEnable(GL_TEXTURE_2D);
-    glBegin(GL_TRIANGLES);
-    for (size_t k = 0; k < recs->n; k++) {
-        const zt_rec *r = &recs->v[k];
-        const uint16_t *tri = t_duck.indices + 3u * (r->tag - 1u);
-        for (int i = 0; i < 3; i++) {
-            double z = r->z[i] / 1073741824.0, w = 1.0 / (a - z);
-            double x = r->xy[2 * i] / 16.0 / W * 2 - 1, y = 1 - r->xy[2 * i + 1] / 16.0 / H * 2;
-            glTexCoord2f((float)(t_duck.uvs[2 * tri[i]] / (double)ZS_UV_ONE),
-                         (float)(t_duck.uvs[2 * tri[i] + 1] / (double)ZS_UV_ONE));
-            glVertex4f((float)(x * w), (float)(y * w), (float)((2 * z - 1) * w), (float)w);
-        }
-    }
-    glEnd();
-    glFinish();
-    glDeleteTextures(1, &tex);
+    zt_gl_draw_records(recs, t_duck.indices, t_duck.uvs, g_code, TW, TH, W, H,
+                       (double)FAR_FX / (double)(FAR_FX - NEAR_FX), 0);
 }
 
 static int wrap_dist(int a, int b, int n)

@@ -26,12 +26,8 @@ static zs_status check_config(const zs_config *c)
     if (c->max_triangles == 0 || c->max_vertices == 0 || c->max_active_edges < 2 ||
         c->max_active_edges > ZS_MAX_ACTIVE_EDGES)
         return ZS_ERR_CAPACITY;
-    if (c->flags & ~(uint16_t)ZS_CFG_ALL)
+    if (!ZS_CFG_FLAGS_OK(c->flags))
         return ZS_ERR_ARGUMENT;
-    if ((c->flags & ZS_CFG_PRIORITY_ONLY) && (c->flags & ZS_CFG_ABUFFER))
-        return ZS_ERR_ARGUMENT; /* the resolve decides by depth */
-    if ((c->flags & ZS_CFG_TEXTURE) && (c->flags & ZS_CFG_ABUFFER))
-        return ZS_ERR_ARGUMENT; /* the resolve's fragments carry no texture (yet) */
     return ZS_OK;
 }
 

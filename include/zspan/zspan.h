@@ -211,6 +211,11 @@ const char *zs_strerror(zs_status status);
 #define ZS_CFG_ALL                                                                 \
     (ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES | ZS_CFG_PRIORITY | \
      ZS_CFG_TEXTURE | ZS_CFG_ABUFFER | ZS_CFG_PRIORITY_ONLY)
+/* Does zs_init accept these flags? Only bits of ZS_CFG_ALL, and not the A-buffer
+ * with textures (its fragments carry none) or without depth planes. */
+#define ZS_CFG_FLAGS_OK(flags)                                                     \
+    (((flags) & ~(unsigned)ZS_CFG_ALL) == 0u &&                                   \
+     !(((flags) & ZS_CFG_ABUFFER) && ((flags) & (ZS_CFG_TEXTURE | ZS_CFG_PRIORITY_ONLY))))
 
 /* Sizes of the records the arena holds (checked against sizeof in src/). */
 #define ZS_VERTEX_BYTES 8u        /* screen x, y (28.4 in int16) and depth */

@@ -37,7 +37,7 @@ static void check_one(const zs_config *c, unsigned long *checked)
              "flags %#x %ux%u tris %u verts %u edges %u: 32-bit %lu, size_t %zu", c->flags,
              c->width, c->height, c->max_triangles, c->max_vertices, c->max_active_edges,
              (unsigned long)narrow, wide);
-    if ((c->flags & ZS_CFG_ABUFFER) && (c->flags & (ZS_CFG_TEXTURE | ZS_CFG_PRIORITY_ONLY)))
+    if (!ZS_CFG_FLAGS_OK(c->flags))
         ZT_CHECK(run == 0, "flags %#x refused, zs_arena_bytes %zu", c->flags, run);
     else
         ZT_CHECK(run == wide, "flags %#x: zs_arena_bytes %zu, macro %zu", c->flags, run, wide);

@@ -460,12 +460,8 @@ static int decode_scene(fz_reader *d, scene *s)
         unsigned allowed = 0;
 #ifdef ZS_CFG_NO_ZLINE
         c.flags = fz_u16(d);
-        if (c.flags & ~(unsigned)ZS_CFG_ALL)
+        if (!ZS_CFG_FLAGS_OK(c.flags))
             allowed |= BIT(ZS_ERR_ARGUMENT);
-        if ((c.flags & ZS_CFG_TEXTURE) && (c.flags & ZS_CFG_ABUFFER))
-            allowed |= BIT(ZS_ERR_ARGUMENT); /* refused together (renderer.c) */
-        if ((c.flags & ZS_CFG_PRIORITY_ONLY) && (c.flags & ZS_CFG_ABUFFER))
-            allowed |= BIT(ZS_ERR_ARGUMENT); /* refused together (renderer.c) */
 #endif
         if (c.width == 0 || c.height == 0 || c.width > ZS_MAX_DIM || c.height > ZS_MAX_DIM)
             allowed |= BIT(ZS_ERR_SIZE);
@@ -1227,8 +1223,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 
     size_t need = zs_arena_bytes(cfg);
 #ifdef ZS_CFG_NO_ZLINE
-    if ((cfg->flags & ~(unsigned)ZS_CFG_ALL) ||
-        ((cfg->flags & ZS_CFG_ABUFFER) && (cfg->flags & (ZS_CFG_TEXTURE | ZS_CFG_PRIORITY_ONLY)))) {
+    if (!ZS_CFG_FLAGS_OK(cfg->flags)) {
         static uint8_t some[64];
         zs_renderer r0;
         FZ_CHECK(need == 0, "zs_arena_bytes with unknown flags %#x = %zu", cfg->flags, need);

@@ -1242,9 +1242,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     st = zs_init(&r, arena, need, cfg);
     FZ_CHECK(st == ZS_OK, "zs_init returned %d (%s)", (int)st, zs_strerror(st));
 
-    /* a camera that failed (or was never completed) is refused */
+    /* a camera that failed (or was never completed) is refused; so is a mode
+     * the core does not have (span, zline, priority and Warnock it has) */
     int cam_ok = s->cam.has_view == 1 && s->cam.has_projection == 1;
-    if (s->bad_mode >= 0 && s->bad_mode != ZS_MODE_SPAN && s->bad_mode != ZS_MODE_ZLINE) {
+    if (s->bad_mode >= 0 && s->bad_mode != ZS_MODE_SPAN && s->bad_mode != ZS_MODE_ZLINE &&
+        s->bad_mode != ZS_MODE_PRIORITY && s->bad_mode != ZS_MODE_WARNOCK) {
         st = zs_frame_begin(&r, &s->cam, (zs_visibility)s->bad_mode);
         FZ_CHECK(st == ZS_ERR_MODE || (!cam_ok && st == ZS_ERR_CAMERA),
                  "frame_begin(mode %d) returned %d (%s)", (int)s->bad_mode, (int)st,

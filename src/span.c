@@ -268,6 +268,48 @@ static inline int32_t edge_side(const uint16_t *f)
         }                                                                                  \
     } while (0)
 
+/* All events at a column are applied before its span: moves the walk to
+ * column xv, writing or extending the span before it and splitting it where
+ * a member overtakes the top. An edge left of the screen acts at column 0,
+ * one right of it at the width. (A macro: it updates the walk's locals.) */
+#define ADVANCE_TO(xv)                                                                     \
+    do {                                                                                   \
+        int32_t x = (xv);                                                                  \
+        if (x > cur) {                                                                     \
+            if (x > width)                                                                 \
+                x = width;                                                                 \
+            if (top ? min_cross < x : ns > 0) {                                            \
+                /* a pick is due, or a member overtakes the top before x */                \
+                if (!top) {                                                                \
+                    top = retop(&w, ns, cur);                                              \
+                    min_cross = r->priv.min_cross;                                         \
+                    others_lo = r->priv.others_lo;                                         \
+                }                                                                          \
+                for (;;) {                                                                 \
+                    if (top != pend_top) { /* spans of one surface merge */                \
+                        if (cur > pend_x0)                                                 \
+                            write_span(&w, pend_top, pend_x0, cur);                        \
+                        pend_top = top;                                                    \
+                        pend_x0 = cur;                                                     \
+                    }                                                                      \
+                    if (min_cross >= x)                                                    \
+                        break;                                                             \
+                    cur = min_cross; /* split */                                           \
+                    r->stats.crossings++;                                                  \
+                    top = retop(&w, ns, cur);                                              \
+                    min_cross = r->priv.min_cross;                                         \
+                    others_lo = r->priv.others_lo;                                         \
+                }                                                                          \
+            } else if (top != pend_top) { /* spans of one surface merge */                 \
+                if (cur > pend_x0)                                                         \
+                    write_span(&w, pend_top, pend_x0, cur);                                \
+                pend_top = top;                                                            \
+                pend_x0 = cur;                                                             \
+            }                                                                              \
+            cur = x;                                                                       \
+        }                                                                                  \
+    } while (0)
+
 void zs_span_row(zs_renderer *r, int y, uint8_t *row)
 {
     zs_active *const act = r->priv.active;
@@ -288,52 +330,11 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
     w.r = r;
     w.row = row;
     w.y = y;
-    for (;;) {
-        const zs_edge *e = 0;
-        int32_t x = width;
+    while (p != end) {
+        const zs_edge *const e = &edges[*p++];
         int32_t t, l; /* the edge's triangles, < 0 for none */
         int handover; /* the top left at this edge with no crossing pending */
-        if (p != end) {
-            e = &edges[*p++];
-            x = e->x;
-        }
-        /* all events at a column are applied before its span; an edge left
-         * of the screen acts at column 0, one right of it at the width */
-        if (x > cur) {
-            if (x > width)
-                x = width;
-            if (top ? min_cross < x : ns > 0) {
-                /* a pick is due, or a member overtakes the top before x */
-                if (!top) {
-                    top = retop(&w, ns, cur);
-                    min_cross = r->priv.min_cross;
-                    others_lo = r->priv.others_lo;
-                }
-                for (;;) {
-                    if (top != pend_top) { /* spans of one surface merge */
-                        if (cur > pend_x0)
-                            write_span(&w, pend_top, pend_x0, cur);
-                        pend_top = top;
-                        pend_x0 = cur;
-                    }
-                    if (min_cross >= x)
-                        break;
-                    cur = min_cross; /* split */
-                    r->stats.crossings++;
-                    top = retop(&w, ns, cur);
-                    min_cross = r->priv.min_cross;
-                    others_lo = r->priv.others_lo;
-                }
-            } else if (top != pend_top) { /* spans of one surface merge */
-                if (cur > pend_x0)
-                    write_span(&w, pend_top, pend_x0, cur);
-                pend_top = top;
-                pend_x0 = cur;
-            }
-            cur = x;
-        }
-        if (!e)
-            break;
+        ADVANCE_TO(e->x);
         /* in/out counters: a span inverted by rounding is never entered
          * (they count modulo 256: entering is 0 -> 1, leaving 1 -> 0) */
         handover = 0;
@@ -405,6 +406,7 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
             }
         }
     }
+    ADVANCE_TO(width); /* the rest of the row */
     if (width > pend_x0)
         write_span(&w, pend_top, pend_x0, width);
     r->stats.pixels_shaded += (uint32_t)width;

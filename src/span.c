@@ -104,7 +104,8 @@ static int32_t overtake(const zs_renderer *r, const zs_active *j, const zs_activ
 /* The top by depth ranges alone, or NULL: the member whose range ends first
  * wins outright if it ends before every other range starts (typical where
  * surfaces are apart in depth); then no plane is evaluated and nothing can
- * overtake it. *others_lo: the smallest zlo of the other members. */
+ * overtake it. *others_lo: the smallest zlo of the other members. Every
+ * member's crossing is reset on the way. */
 static zs_active *range_top(zs_active *act, const uint16_t *set, int ns, uint16_t *others_lo)
 {
     zs_active *near = 0;
@@ -113,6 +114,8 @@ static zs_active *range_top(zs_active *act, const uint16_t *set, int ns, uint16_
     int k;
     for (k = 0; k < ns; k++) {
         zs_active *a = &act[set[k]];
+        a->cross = NO_CROSS; /* the top's is never read; the others' are set
+                                again unless this pick needs no depth */
         if (!near || a->zhi < near->zhi)
             near = a;
         if (a->zlo < lo1) {
@@ -150,8 +153,6 @@ static ZS_NOINLINE zs_active *retop(const walk_ctx *w, int ns, int32_t x)
     int k;
     if (best) { /* nearer than every other member wherever they meet */
         r->priv.others_lo = others_lo;
-        for (k = 0; k < ns; k++)
-            act[set[k]].cross = NO_CROSS;
         r->priv.min_cross = NO_CROSS;
         return best;
     }

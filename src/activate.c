@@ -232,7 +232,7 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     a->cross = -1; /* zline.c: no row depth cached */
     a->flags = long_left ? ZS_ACT_LONG_LEFT : 0;
     a->y_end = (int16_t)zs_first_row(s[2]->y);
-    if (r->priv.mode == ZS_MODE_SPAN)
+    if (r->priv.mode == ZS_MODE_SPAN || r->priv.mode == ZS_MODE_ZLINE)
         depth_range(a, s);
     long_edge = new_edge(r, ai, long_left, s[0], s[2], y);
     if (y < zs_first_row(s[1]->y))

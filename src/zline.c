@@ -4,8 +4,9 @@
  * on both planes, then the row written from the owners. Exact for any input
  * at the cost of a depth test per overlapped pixel; the reference the span
  * mode is tested against. A pixel's depth is its owner's plane there, so it
- * is not stored: columns no span reached yet are taken without a test, and
- * a plane is made only for triangles that meet another one. */
+ * is not stored: columns no span reached yet are taken without a test,
+ * runs whose owner's depth range is apart from the triangle's are decided
+ * whole, and a plane is made only for triangles that need a depth. */
 #include "zs_internal.h"
 
 /* Ends owner runs in test(): no active index (they stay below 2^11) nor ZS_NONE. */
@@ -108,11 +109,12 @@ static void test(zs_renderer *r, int32_t y, uint16_t *owner, int32_t x0, int32_t
 {
     const zs_active *act = r->priv.active;
     const zs_active_plane *pl = r->priv.aplane;
-    /* a triangle has one span a row: its row depth is not cached yet (made
-     * here, with its plane if lazy, for its turns as an owner) */
-    const int64_t zrow = new_row_depth(r, ai, y);
-    const int64_t dz = act[ai].zdx;
-    const uint16_t tri = act[ai].tri;
+    const uint16_t tri = act[ai].tri, zlo = act[ai].zlo, zhi = act[ai].zhi;
+    /* its depth at column 0 of this row: made at the first run whose owner
+     * the depth ranges do not decide (a triangle has one span a row, so
+     * nothing has cached it yet) */
+    int64_t zrow = 0, dz = 0;
+    int have_depth = 0;
     uint16_t *q = owner + x0, *const q1 = owner + x1;
     /* a sentinel at x1 (the line has a slot past the last column) ends every
      * run there: no bound test per pixel */
@@ -126,6 +128,24 @@ static void test(zs_renderer *r, int32_t y, uint16_t *owner, int32_t x0, int32_t
                 *q = ai;
             while (*++q == ZS_NONE);
             continue;
+        }
+        /* depth ranges apart (activate.c): one is nearer at every centre
+         * both cover, and no depth is needed */
+        if (zhi <= act[o].zlo) {
+            do
+                *q = ai;
+            while (*++q == o);
+            continue;
+        }
+        if (act[o].zhi <= zlo) {
+            while (*++q == o)
+                ;
+            continue;
+        }
+        if (!have_depth) {
+            zrow = new_row_depth(r, ai, y);
+            dz = act[ai].zdx;
+            have_depth = 1;
         }
         /* d < 0 or (d == 0 and the tie goes to ai): d - tie < 0 (integers) */
         d = zrow - row_depth(r, act, pl, o, y) - (tri < act[o].tri);

@@ -73,7 +73,7 @@ typedef struct zs_active {
     uint16_t set_pos;      /* position in the in-polygon set */
     int16_t y_end;         /* first row below the triangle */
     int32_t cross;         /* span walk: column where it overtakes the top */
-    uint16_t zlo, zhi;     /* span mode: depth range in 2^-15 units, widened
+    uint16_t zlo, zhi;     /* span, zline: depth range in 2^-15 units, widened
                               past every evaluation error: where zlo > 0,
                               zlo * 2^25 <= depth (Q40) < zhi * 2^25 at any
                               centre it covers (activate.c) */

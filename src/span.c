@@ -206,7 +206,8 @@ static ZS_INLINE_ALWAYS void write_span(const walk_ctx *w, const zs_active *a, i
     put_span(w, a, x0, x1);
 #else
     if (w->r->priv.bpp == 2 && !(a && (a->flags & ZS_ACT_GOURAUD))) {
-        zs_fill2(w->row + 2 * x0, x1 - x0, a ? a->pixel : w->r->priv.background);
+        /* a constant bpp: zs_fill_flat folds to the 2-byte fill */
+        zs_fill_flat(w->row, x0, x1, 2u, a ? a->pixel : w->r->priv.background);
         w->r->stats.spans++;
     } else {
         put_span(w, a, x0, x1);

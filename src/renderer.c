@@ -121,8 +121,9 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
         /* span mode sorts edges here: 2 keys a pixel (zline mode keeps
          * owners only, not depths) */
         r->priv.sort_keys = carve(&cur, (size_t)cfg->width * 8u);
-        /* one owner a column and a sentinel past the last (zline.c) */
-        r->priv.zline_owner = carve(&cur, (size_t)cfg->width * 2u + 2u);
+        /* one owner a column and two slots past the last: a sentinel and the
+         * other half of the word holding it (zline.c reads owners in pairs) */
+        r->priv.zline_owner = carve(&cur, (size_t)cfg->width * 2u + 4u);
     }
     if (cfg->flags & ZS_CFG_MONO) {
         r->priv.mono_grey = carve(&cur, cfg->width);

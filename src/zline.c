@@ -9,28 +9,30 @@
  * whole, and a plane is made only for triangles that need a depth. */
 #include "zs_internal.h"
 
-/* Ends owner runs in test(): no active index (they stay below 2^11) nor ZS_NONE. */
+/* Ends owner runs in test() and write_runs(): no active index (they stay
+ * below 2^11) nor ZS_NONE. */
 #define SENTINEL 0xFFFEu
 
-/* First column from x on (up to x1) not owned by o. The owner line is 8-byte
- * aligned in the arena: pairs of owners are compared as words. */
-static int32_t run_end(const uint16_t *owner, int32_t x, int32_t x1, uint16_t o)
+/* First column from x on not owned by o; a SENTINEL (no owner) ends the
+ * columns reached, so there is no bound test. The owner line is 8-byte
+ * aligned in the arena and has two slots past the last column: pairs of
+ * owners are compared as words, up to the one holding the sentinel. */
+static int32_t run_end(const uint16_t *owner, int32_t x, uint16_t o)
 {
 #ifdef ZS_WORD_STORES
     const zs_word_alias *wp;
-    uint32_t pair = (uint32_t)o * 0x10001u;
-    if ((x & 1) && x < x1) {
+    const uint32_t pair = (uint32_t)o * 0x10001u;
+    if (x & 1) {
         if (owner[x] != o)
             return x;
         x++;
     }
     wp = (const zs_word_alias *)(const void *)(owner + x);
-    while (x + 1 < x1 && *wp == pair) {
+    while (*wp == pair)
         wp++;
-        x += 2;
-    }
+    x = (int32_t)((const uint16_t *)(const void *)wp - owner);
 #endif
-    while (x < x1 && owner[x] == o)
+    while (owner[x] == o)
         x++;
     return x;
 }
@@ -38,7 +40,7 @@ static int32_t run_end(const uint16_t *owner, int32_t x, int32_t x1, uint16_t o)
 /* Writes the row from the owners of columns [x0, x1) (background outside):
  * one fill per run of equal owner, so every pixel is written once however
  * much the triangles overlap. */
-static void write_runs(zs_renderer *r, int32_t y, const uint16_t *owner, uint8_t *row,
+static void write_runs(zs_renderer *r, int32_t y, uint16_t *owner, uint8_t *row,
                        int32_t x0, int32_t x1)
 {
     const zs_active *act = r->priv.active;
@@ -49,10 +51,11 @@ static void write_runs(zs_renderer *r, int32_t y, const uint16_t *owner, uint8_t
         zs_fill_flat(row, 0, x0, bpp, background);
         r->stats.spans++;
     }
+    owner[x1] = SENTINEL; /* past the columns reached: read by no one else */
     while (x < x1) {
         uint16_t o = owner[x];
         int32_t xs = x;
-        x = run_end(owner, x + 1, x1, o);
+        x = run_end(owner, x + 1, o);
         if (o == ZS_NONE)
             zs_fill_flat(row, xs, x, bpp, background);
         else if (act[o].flags & ZS_ACT_GOURAUD)

@@ -243,9 +243,9 @@ const char *zs_strerror(zs_status status);
  * takes one slot per two), with the features `flags` (ZS_CFG_*) leaves in.
  * Includes alignment slack; a compile-time constant when the arguments are.
  * Per pool: vertices 8 B (+4 B shade), triangle records 12 B, row buckets
- * 2 B per row, edges 32 B, active triangles 36 B + a 24 B depth plane (none
+ * 2 B per row, edges 28 B, active triangles 32 B + a 24 B depth plane (none
  * with ZS_CFG_PRIORITY_ONLY) (+36 B colour planes), the
- * z-buffer line 10 B per column and 2 B; with ZS_CFG_MONO 3 B per column, with
+ * z-buffer line 10 B per column and 4 B; with ZS_CFG_MONO 3 B per column, with
  * ZS_CFG_LINES 6 B per column (4 with ZS_CFG_MONO too), 14 B and 1 bit
  * per triangle record and 2 B per vertex; with ZS_CFG_PRIORITY 4 B per
  * triangle record. */
@@ -274,7 +274,7 @@ const char *zs_strerror(zs_status status);
      2u * ZS_ROUND8_T_(T, (T)((max_edges) / 2u) * 2u) +                             \
      (((flags) & ZS_CFG_NO_ZLINE)                                                   \
           ? 0u                                                                      \
-          : ZS_ROUND8_T_(T, (T)(w) * 8u) + ZS_ROUND8_T_(T, (T)(w) * 2u + 2u)) +     \
+          : ZS_ROUND8_T_(T, (T)(w) * 8u) + ZS_ROUND8_T_(T, (T)(w) * 2u + 4u)) +     \
      (((flags) & (ZS_CFG_MONO | ZS_CFG_LINES)) ? ZS_ROUND8_T_(T, (T)(w)) : 0u) +     \
      (((flags) & ZS_CFG_MONO) ? ZS_ROUND8_T_(T, (T)(w) * 2u) : 0u) +                \
      (((flags) & ZS_CFG_LINES)                                                      \

@@ -4,9 +4,10 @@
  * on both planes, then the row written from the owners. Exact for any input
  * at the cost of a depth test per overlapped pixel; the reference the span
  * mode is tested against. A pixel's depth is its owner's plane there, so it
- * is not stored: columns no span reached yet are taken without a test,
- * runs whose owner's depth range is apart from the triangle's are decided
- * whole, and a plane is made only for triangles that need a depth. */
+ * is not stored. Work is kept to where spans overlap: a span that overlaps
+ * no other is written as it is, runs whose owner's depth range is apart
+ * from the triangle's are decided whole, and a plane is made only for
+ * triangles that need a depth. */
 #include "zs_internal.h"
 
 /* Ends owner runs in test() and write_runs(): no active index (they stay
@@ -37,38 +38,47 @@ static int32_t run_end(const uint16_t *owner, int32_t x, uint16_t o)
     return x;
 }
 
-/* Writes the row from the owners of columns [x0, x1) (background outside):
- * one fill per run of equal owner, so every pixel is written once however
- * much the triangles overlap. */
+/* Writes columns [x0, x1) of the row from their owners: one fill per run of
+ * equal owner, so every pixel is written once however much the triangles
+ * overlap. */
 static void write_runs(zs_renderer *r, int32_t y, uint16_t *owner, uint8_t *row,
                        int32_t x0, int32_t x1)
 {
     const zs_active *act = r->priv.active;
-    int32_t w = r->cfg.width, x = x0;
+    int32_t x = x0;
     unsigned bpp = r->priv.bpp;
-    uint32_t background = r->priv.background;
-    if (x0 > 0) {
-        zs_fill_flat(row, 0, x0, bpp, background);
-        r->stats.spans++;
-    }
-    owner[x1] = SENTINEL; /* past the columns reached: read by no one else */
+    owner[x1] = SENTINEL; /* past the cluster: no one reads it before a set_owner */
     while (x < x1) {
         uint16_t o = owner[x];
         int32_t xs = x;
         x = run_end(owner, x + 1, o);
-        if (o == ZS_NONE)
-            zs_fill_flat(row, xs, x, bpp, background);
-        else if (act[o].flags & ZS_ACT_GOURAUD)
+        if (act[o].flags & ZS_ACT_GOURAUD)
             zs_fill_gouraud(r, &r->priv.acolor[o], y - act[o].y0, row, xs, x);
         else
             zs_fill_flat(row, xs, x, bpp, act[o].pixel);
         r->stats.spans++;
     }
-    if (x1 < w) {
-        zs_fill_flat(row, x1, w, bpp, background);
+}
+
+/* Columns [x0, x1) of one triangle alone: its span, no owner needed. */
+static void write_alone(zs_renderer *r, int32_t y, uint16_t ai, uint8_t *row, int32_t x0,
+                        int32_t x1)
+{
+    const zs_active *a = &r->priv.active[ai];
+    if (a->flags & ZS_ACT_GOURAUD)
+        zs_fill_gouraud(r, &r->priv.acolor[ai], y - a->y0, row, x0, x1);
+    else
+        zs_fill_flat(row, x0, x1, r->priv.bpp, a->pixel);
+    r->stats.spans++;
+}
+
+/* The background over [x0, x1), if not empty. */
+static void write_gap(zs_renderer *r, uint8_t *row, int32_t x0, int32_t x1)
+{
+    if (x1 > x0) {
+        zs_fill_flat(row, x0, x1, r->priv.bpp, r->priv.background);
         r->stats.spans++;
     }
-    r->stats.pixels_shaded += (uint32_t)w;
 }
 
 /* Owners of columns [x0, x1) := o: a 2-byte fill (the pair holds o twice,
@@ -126,12 +136,6 @@ static void test(zs_renderer *r, int32_t y, uint16_t *owner, int32_t x0, int32_t
     while (q != q1) {
         uint16_t o = *q;
         int64_t d, dd;
-        if (o == ZS_NONE) { /* a cleared gap: taken */
-            do
-                *q = ai;
-            while (*++q == ZS_NONE);
-            continue;
-        }
         /* depth ranges apart (activate.c): one is nearer at every centre
          * both cover, and no depth is needed */
         if (zhi <= act[o].zlo) {
@@ -163,19 +167,26 @@ static void test(zs_renderer *r, int32_t y, uint16_t *owner, int32_t x0, int32_t
     *q1 = kept;
 }
 
+/* Spans come in order of their left columns (the edge list is sorted), so
+ * the row falls into clusters of overlapping spans with gaps between them:
+ * a span starting at or right of the cluster's end starts a new one, and the
+ * cluster before it is final. A cluster of one span is written as it is;
+ * only overlaps go through the owner line and its depth tests. */
 void zs_zline_row(zs_renderer *r, int y, uint8_t *row)
 {
     const zs_edge *edges = r->priv.edges;
     const uint16_t *ael = r->priv.ael;
     const zs_active *act = r->priv.active;
-    uint16_t *owner = r->priv.zline_owner; /* active triangle, or ZS_NONE */
-    int32_t w = r->cfg.width, x0 = w, x1 = w; /* [x0, x1): columns reached */
+    uint16_t *owner = r->priv.zline_owner; /* active triangle */
+    const int32_t w = r->cfg.width;
+    int32_t x0 = 0, x1 = 0; /* the cluster [x0, x1); the row is written up to x0 */
+    uint16_t alone = ZS_NONE; /* the cluster's only span, its owners not set */
     uint32_t evals = 0;
     int i;
     for (i = 0; i < r->priv.n_ael; i++) {
         const zs_edge *e = &edges[ael[i]];
         uint16_t ai = e->lead;
-        int32_t xl, xr, a, b;
+        int32_t xl, xr;
         if (ai == ZS_NONE)
             continue;
         xl = zs_clampi(e->x, 0, w);
@@ -183,32 +194,33 @@ void zs_zline_row(zs_renderer *r, int y, uint8_t *row)
         if (xl >= xr)
             continue;
         evals += (uint32_t)(xr - xl);
-        if (x0 == w) { /* the row's first span */
-            set_owner(owner, xl, xr, ai);
+        if (xl >= x1) { /* a new cluster: the last one is final */
+            if (alone != ZS_NONE)
+                write_alone(r, y, alone, row, x0, x1);
+            else if (x1 > x0)
+                write_runs(r, y, owner, row, x0, x1);
+            write_gap(r, row, x1, xl);
             x0 = xl;
             x1 = xr;
+            alone = ai;
             continue;
         }
-        /* the part of [xl, xr) within [x0, x1) is tested; the rest is new
-         * (a gap between the two ranges is cleared, as the line is cleared
-         * only as far as spans reach) */
-        a = xl > x0 ? xl : x0;
-        b = xr < x1 ? xr : x1;
-        if (a < b)
-            test(r, y, owner, a, b, ai);
-        if (xl < x0) {
-            b = xr < x0 ? xr : x0;
-            set_owner(owner, xl, b, ai);
-            set_owner(owner, b, x0, ZS_NONE);
-            x0 = xl;
+        /* it overlaps the cluster (xl >= x0: spans come in order) */
+        if (alone != ZS_NONE) {
+            set_owner(owner, x0, x1, alone);
+            alone = ZS_NONE;
         }
+        test(r, y, owner, xl, xr < x1 ? xr : x1, ai);
         if (xr > x1) {
-            a = xl > x1 ? xl : x1;
-            set_owner(owner, x1, a, ZS_NONE);
-            set_owner(owner, a, xr, ai);
+            set_owner(owner, x1, xr, ai);
             x1 = xr;
         }
     }
+    if (alone != ZS_NONE)
+        write_alone(r, y, alone, row, x0, x1);
+    else if (x1 > x0)
+        write_runs(r, y, owner, row, x0, x1);
+    write_gap(r, row, x1, w);
     r->stats.depth_evals += evals;
-    write_runs(r, y, owner, row, x0, x1);
+    r->stats.pixels_shaded += (uint32_t)w;
 }

@@ -52,6 +52,10 @@
  *     coplanar duplicates of a layer submitted later with rotated vertex
  *     order (same or copied vertices): ray caster (exact ties to the earlier
  *     triangle), span == zline in ID16, RGB565 flat and RGB888 Gouraud.
+ *     The z-buffer mode's shortcuts (zline.c: owner runs decided whole by
+ *     the depth ranges, spans that overlap no other written directly) are
+ *     checked against the ray caster on the same frames, and Warnock's
+ *     image (which takes neither) must equal both modes'.
  *
  * Near ties (ZT_TIE_TOL) are left out of the ray-caster comparisons as in
  * the other suites; their number is printed and must stay under 1%.
@@ -1279,6 +1283,12 @@ static void test_layers(void **state)
         ZT_ST(f->draw_st, ZS_OK);
         ZT_CHECK(f->st.tris_dropped == 0 && f->st.records_skipped == 0, "%s: pools too small", what);
         bad += zt_vs_raycast(f, what);
+        /* the z-buffer mode decides runs by the same depth ranges and writes
+         * spans that overlap nothing directly: against the ray caster too */
+        zt_guarded_frame(&c, &cam, ZS_MODE_ZLINE, &m, 1, NULL, f, 1 + (int)zt_below(&g, 9));
+        ZT_ST(f->draw_st, ZS_OK);
+        bad += zt_vs_raycast(f, what);
+        zt_guarded_frame(&c, &cam, ZS_MODE_SPAN, &m, 1, NULL, f, 1 + (int)zt_below(&g, 9));
         zt_raycast(&f->recs, &cast);
         for (int i = 0; i < LG_W * LG_H; i++) g_lg_dup_px += cast.exact[i];
         memcpy(ref, f->img, (size_t)LG_W * LG_H * 2);

@@ -76,7 +76,8 @@ static ZS_NOINLINE void reset_shading(zs_renderer *r)
     r->shade = zs_shade_default();
     r->priv.bpp = (uint8_t)zs_format_bytes(r->shade.format);
     r->priv.out_format = (uint8_t)r->shade.format;
-    r->priv.rows_kind = r->priv.mode == ZS_MODE_WARNOCK ? ZS_ROWS_AREA : ZS_ROWS_BYTES;
+    r->priv.rows_kind =
+        ZS_HAS_WARNOCK && r->priv.mode == ZS_MODE_WARNOCK ? ZS_ROWS_AREA : ZS_ROWS_BYTES;
 }
 
 zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_config *cfg)
@@ -145,13 +146,13 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
         r->priv.sort_list = carve(&cur, (size_t)cfg->max_triangles * 2u);
         r->priv.sort_aux = carve(&cur, (size_t)cfg->max_triangles * 2u);
     }
-    if (cfg->flags & ZS_CFG_TEXTURE) {
+    if (ZS_HAS_TEXTURE && (cfg->flags & ZS_CFG_TEXTURE)) {
         r->priv.tex_verts = carve(&cur, (size_t)cfg->max_vertices * sizeof(zs_tex_vert));
         r->priv.atex = carve(&cur, a * sizeof(zs_active_tex));
         memset(r->priv.atex, 0, a * sizeof(zs_active_tex)); /* serial 0: made in no frame */
         r->priv.textures = carve(&cur, ZS_MAX_FRAME_TEXTURES * sizeof(void *));
     }
-    if (cfg->flags & ZS_CFG_ABUFFER)
+    if (ZS_HAS_ABUFFER && (cfg->flags & ZS_CFG_ABUFFER))
         r->priv.aa = zs_abuffer_carve(r, &cur);
     /* the widest guard band whose projected 28.4 coordinates fit int16 */
     dim = cfg->width > cfg->height ? cfg->width : cfg->height;
@@ -185,8 +186,11 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
     if (mode != ZS_MODE_SPAN && mode != ZS_MODE_ZLINE && mode != ZS_MODE_WARNOCK &&
         mode != ZS_MODE_PRIORITY)
         return ZS_ERR_MODE;
-    if (mode == ZS_MODE_ZLINE && (r->cfg.flags & ZS_CFG_NO_ZLINE))
+    if (mode == ZS_MODE_ZLINE && (!ZS_HAS_ZLINE || (r->cfg.flags & ZS_CFG_NO_ZLINE)))
         return ZS_ERR_MODE;
+    if ((mode == ZS_MODE_WARNOCK && !ZS_HAS_WARNOCK) ||
+        (mode == ZS_MODE_PRIORITY && !ZS_HAS_PRIORITY))
+        return ZS_ERR_MODE; /* left out of this build (ZS_NO_WARNOCK, ZS_NO_PRIORITY) */
     if (mode != ZS_MODE_PRIORITY && (r->cfg.flags & ZS_CFG_PRIORITY_ONLY))
         return ZS_ERR_MODE; /* no depth planes */
     if (cam->has_view != 1 || cam->has_projection != 1)
@@ -221,7 +225,8 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
     r->priv.tall_rows = 0xFFFFu; /* counted when Warnock mode or zs_pick needs it */
     r->priv.line_next = 0;
     r->priv.line_keep = 0;
-    zs_abuffer_frame(r);
+    if (ZS_HAS_ABUFFER)
+        zs_abuffer_frame(r);
     memset(r->priv.buckets, 0xFF, (size_t)r->cfg.height * 2u);
     if (r->priv.draw_starts)
         memset(r->priv.draw_starts, 0, ((size_t)r->cfg.max_triangles + 7u) / 8u);
@@ -239,10 +244,14 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
         return ZS_ERR_STATE;
     if (p->shading != ZS_SHADE_FLAT && p->shading != ZS_SHADE_GOURAUD)
         return ZS_ERR_MODE;
-    if ((r->cfg.flags & ZS_CFG_FLAT_ONLY) && (p->shading != ZS_SHADE_FLAT || p->fog.enabled))
+    if ((!ZS_HAS_GOURAUD || (r->cfg.flags & ZS_CFG_FLAT_ONLY)) &&
+        (p->shading != ZS_SHADE_FLAT || p->fog.enabled))
         return ZS_ERR_MODE;
     if ((unsigned)p->format >= (unsigned)ZS_FMT_COUNT && !MONO_BUILT(p->format))
         return ZS_ERR_FORMAT;
+    if (!ZS_HAS_FORMATS && (unsigned)p->format < (unsigned)ZS_FMT_COUNT &&
+        p->format != ZS_FMT_RGB565_BE && p->format != ZS_FMT_RGB565)
+        return ZS_ERR_FORMAT; /* ZS_RGB565_ONLY */
     if (zs_format_is_mono(p->format)) {
         if (p->mono & ~(unsigned)(ZS_MONO_DIFFUSE | ZS_MONO_LINES | ZS_MONO_INVERT) ||
             p->crease_deg >= 180)
@@ -286,7 +295,7 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
     r->priv.bpp = (uint8_t)zs_format_bytes(r->shade.format);
     r->priv.rows_kind = (zs_format_is_mono(p->format) || p->format == ZS_FMT_GRAY4)
                             ? ZS_ROWS_MONO /* a scratch line, then packed */
-                        : r->priv.mode == ZS_MODE_WARNOCK ? ZS_ROWS_AREA
+                        : ZS_HAS_WARNOCK && r->priv.mode == ZS_MODE_WARNOCK ? ZS_ROWS_AREA
                                                           : ZS_ROWS_BYTES;
     return ZS_OK;
 }
@@ -295,7 +304,7 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
 /* One row of visibility: the row machinery, or area subdivision. */
 void zs_visible_row(zs_renderer *r, int y, uint8_t *row)
 {
-    if (r->priv.mode == ZS_MODE_WARNOCK)
+    if (ZS_HAS_WARNOCK && r->priv.mode == ZS_MODE_WARNOCK)
         zs_warnock_rows(r, y, 1, row, 0);
     else
         zs_raster_row(r, y, row);
@@ -313,7 +322,7 @@ static void mono_row(zs_renderer *r, int y, uint8_t *out)
     uint8_t *grey = r->priv.mono_grey;
     if (r->priv.out_format == ZS_FMT_GRAY4) {
         zs_visible_row(r, y, grey);
-        if (r->priv.aa_mode)
+        if (ZS_HAS_ABUFFER && r->priv.aa_mode)
             zs_abuffer_row(r, y, grey);
         zs_gray4_row(r, y, grey, out);
         return;
@@ -322,7 +331,7 @@ static void mono_row(zs_renderer *r, int y, uint8_t *out)
         zs_lines_row(r, y, grey); /* renders the rows it needs */
     } else {
         zs_visible_row(r, y, grey);
-        if (r->priv.aa_mode) /* span mode only */
+        if (ZS_HAS_ABUFFER && r->priv.aa_mode) /* span mode only */
             zs_abuffer_row(r, y, grey);
     }
     zs_mono_row(r, y, grey, out);
@@ -365,7 +374,7 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
                 zs_lines_begin(r);
         }
 #endif
-        if (r->priv.aa_mode)
+        if (ZS_HAS_ABUFFER && r->priv.aa_mode)
             zs_abuffer_begin(r);
         r->priv.state = ZS_STATE_RENDERING;
     }
@@ -378,7 +387,7 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
     if (kind == ZS_ROWS_BYTES) {
         for (y = y0; y < y0 + rows; y++)
             zs_raster_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
-    } else if (kind == ZS_ROWS_AREA) { /* the band as one rectangle */
+    } else if (ZS_HAS_WARNOCK && kind == ZS_ROWS_AREA) { /* the band as one rectangle */
         zs_warnock_rows(r, y0, rows, (uint8_t *)buf, stride);
     } else {
         for (y = y0; y < y0 + rows; y++) {
@@ -388,7 +397,7 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
                 mono_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
         }
     }
-    if (r->priv.aa_mode && kind != ZS_ROWS_MONO) /* the A-buffer rewrites the rows' edge pixels */
+    if (ZS_HAS_ABUFFER && r->priv.aa_mode && kind != ZS_ROWS_MONO) /* the A-buffer rewrites the rows' edge pixels */
         zs_abuffer_rows(r, y0, rows, (uint8_t *)buf, stride);
     r->priv.next_row = y0 + rows;
     r->stats.rows += (uint32_t)rows;

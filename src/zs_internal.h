@@ -8,6 +8,10 @@
 
 #define ZS_NONE 0xFFFFu
 
+/* Colour planes and per-vertex shade words: Gouraud and fog, and the light
+ * of textured records (zspan.h: ZS_NO_GOURAUD, ZS_NO_TEXTURE). */
+#define ZS_HAS_PLANES_ (ZS_HAS_GOURAUD || ZS_HAS_TEXTURE)
+
 /* zs_render_rows' paths (priv.rows_kind): the row machinery into byte
  * rows, into a 1-bit format's scratch line, or Warnock mode's rectangles. */
 enum { ZS_ROWS_BYTES = 0, ZS_ROWS_MONO, ZS_ROWS_AREA };

@@ -518,8 +518,10 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     prepare_clip_rows(&c);
     c.lit = (uint8_t)(r->shade.light_count > 0 || r->shade.ambient != ZS_FX_ONE);
     c.vertex_light =
-        (uint8_t)(r->shade.shading == ZS_SHADE_GOURAUD && c.lit && m->vertex_normals != 0);
-    c.vertex_color = (uint8_t)(r->shade.shading == ZS_SHADE_GOURAUD && m->vertex_colors != 0);
+        (uint8_t)(ZS_HAS_GOURAUD && r->shade.shading == ZS_SHADE_GOURAUD && c.lit &&
+                  m->vertex_normals != 0);
+    c.vertex_color = (uint8_t)(ZS_HAS_GOURAUD && r->shade.shading == ZS_SHADE_GOURAUD &&
+                               m->vertex_colors != 0);
     c.tri_flags = ((c.vertex_light || c.vertex_color) ? ZS_TRI_MODULATE : 0u) |
                   ((r->shade.fog.enabled && !c.tex_slot) ? ZS_TRI_FOG : 0u) | /* texture.c fogs */
                   (c.tex_slot ? ZS_TRI_TEXTURED : 0u);

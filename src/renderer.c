@@ -49,8 +49,9 @@ size_t zs_arena_bytes(const zs_config *cfg)
     if (arena_bytes32(cfg) > SIZE_MAX)
         return 0; /* more than the address space: reported as a capacity error */
 #endif
+    /* flags & ZS_CFG_BUILT: the same (checked above), and the left-out terms fold away */
     return ZS_ARENA_BYTES_CFG(cfg->width, cfg->height, cfg->max_triangles, cfg->max_vertices,
-                              cfg->max_active_edges, cfg->flags);
+                              cfg->max_active_edges, cfg->flags & ZS_CFG_BUILT);
 }
 
 /* Built with -DZS_NO_MONO the 1-bit stages (mono.c, lines.c) are never
@@ -125,11 +126,11 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
         /* one owner a column and a sentinel past the last (zline.c) */
         r->priv.zline_owner = carve(&cur, (size_t)cfg->width * 2u + 2u);
     }
-    if (cfg->flags & ZS_CFG_MONO) {
+    if (ZS_HAS_MONO && (cfg->flags & ZS_CFG_MONO)) {
         r->priv.mono_grey = carve(&cur, cfg->width);
         r->priv.mono_err = carve(&cur, (size_t)cfg->width * 2u);
     }
-    if (cfg->flags & ZS_CFG_LINES) {
+    if (ZS_HAS_MONO && (cfg->flags & ZS_CFG_LINES)) {
         if (!r->priv.mono_grey)
             r->priv.mono_grey = carve(&cur, cfg->width);
         r->priv.line_ids[0] = carve(&cur, (size_t)cfg->width * 2u);
@@ -142,7 +143,7 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
         r->priv.line_next_rec = carve(&cur, (size_t)cfg->max_triangles * 6u);
         r->priv.line_vert_head = carve(&cur, (size_t)cfg->max_vertices * 2u);
     }
-    if (cfg->flags & ZS_CFG_PRIORITY) {
+    if (ZS_HAS_PRIORITY && (cfg->flags & ZS_CFG_PRIORITY)) {
         r->priv.sort_list = carve(&cur, (size_t)cfg->max_triangles * 2u);
         r->priv.sort_aux = carve(&cur, (size_t)cfg->max_triangles * 2u);
     }
@@ -351,7 +352,7 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
         return ZS_ERR_ROW;
     /* byte formats first: the common call costs no more than before */
     kind = r->priv.rows_kind; /* per frame: byte rows, 1-bit rows, or Warnock */
-    if (kind != ZS_ROWS_MONO) {
+    if (!ZS_HAS_MONO || kind != ZS_ROWS_MONO) {
         need = (size_t)r->cfg.width * r->priv.bpp;
         units = (size_t)rows;
     } else {
@@ -389,7 +390,7 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
             zs_raster_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
     } else if (ZS_HAS_WARNOCK && kind == ZS_ROWS_AREA) { /* the band as one rectangle */
         zs_warnock_rows(r, y0, rows, (uint8_t *)buf, stride);
-    } else {
+    } else if (ZS_HAS_MONO) {
         for (y = y0; y < y0 + rows; y++) {
             if (r->priv.out_format == ZS_FMT_MONO_PAGE) /* a page holds 8 rows */
                 mono_row(r, y, (uint8_t *)buf + (size_t)(y / 8 - y0 / 8) * stride);

@@ -67,7 +67,7 @@ void zs_shade_setup(const zs_renderer *r, zs_active *a, zs_active_color *ac, con
         uint16_t h;
         uint8_t b[4];
     } u;
-    if (ZS_HAS_FORMATS && r->shade.format == ZS_FMT_ID16) {
+    if (!ZS_ONLY_565_ && r->shade.format == ZS_FMT_ID16) {
         a->flags &= (uint8_t)~ZS_ACT_GOURAUD;
         u.h = (uint16_t)t->color;
         a->pixel = (uint32_t)u.h * 0x10001u; /* the tag twice (see zs_pixel_word) */

@@ -115,7 +115,8 @@ extern "C" {
  *                   zs_frame_shading, as with ZS_CFG_FLAT_ONLY (flat and lit
  *                   faces work; textures still light through their planes)
  *   ZS_NO_MONO      the 1-bit formats, hidden lines and ZS_FMT_GRAY4
- *                   (mono.c, lines.c, gray4.c): those formats are ZS_ERR_FORMAT
+ *                   (mono.c, lines.c, gray4.c): those formats are ZS_ERR_FORMAT,
+ *                   ZS_CFG_MONO and ZS_CFG_LINES refused
  *   ZS_RGB565_ONLY  the byte formats but ZS_FMT_RGB565_BE and ZS_FMT_RGB565
  *                   (RGB666, GRAY8, RGB888, ID16) are ZS_ERR_FORMAT
  *   ZS_LEAN         all of the above: flat (and lit) faces, span mode, RGB565
@@ -316,7 +317,8 @@ const char *zs_strerror(zs_status status);
 #define ZS_CFG_BUILT                                                               \
     (ZS_CFG_ALL & ~((ZS_HAS_TEXTURE ? 0u : ZS_CFG_TEXTURE) |                        \
                     (ZS_HAS_ABUFFER ? 0u : ZS_CFG_ABUFFER) |                        \
-                    (ZS_HAS_PRIORITY ? 0u : (ZS_CFG_PRIORITY | ZS_CFG_PRIORITY_ONLY))))
+                    (ZS_HAS_PRIORITY ? 0u : (ZS_CFG_PRIORITY | ZS_CFG_PRIORITY_ONLY)) | \
+                    (ZS_HAS_MONO ? 0u : (ZS_CFG_MONO | ZS_CFG_LINES))))
 /* Does zs_init accept these flags? Only bits of ZS_CFG_BUILT, and not the
  * A-buffer with textures (its fragments carry none) or without depth planes. */
 #define ZS_CFG_FLAGS_OK(flags)                                                     \

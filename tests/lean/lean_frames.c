@@ -101,6 +101,8 @@ static void refusals(zs_renderer *r, const zs_camera *cam)
     expect("ZS_CFG_ABUFFER", init(r, ZS_CFG_ABUFFER), ZS_ERR_ARGUMENT, ZS_OK);
     expect("ZS_CFG_PRIORITY", init(r, ZS_CFG_PRIORITY), ZS_ERR_ARGUMENT, ZS_OK);
     expect("ZS_CFG_PRIORITY_ONLY", init(r, ZS_CFG_PRIORITY_ONLY), ZS_ERR_ARGUMENT, ZS_OK);
+    expect("ZS_CFG_MONO", init(r, ZS_CFG_MONO), ZS_ERR_ARGUMENT, ZS_OK);
+    expect("ZS_CFG_LINES", init(r, ZS_CFG_LINES), ZS_ERR_ARGUMENT, ZS_OK);
     /* the rest on a renderer with every flag this build takes */
     expect("init", init(r, (uint16_t)(ZS_CFG_BUILT & (ZS_CFG_TEXTURE | ZS_CFG_PRIORITY))),
            ZS_OK, ZS_OK);

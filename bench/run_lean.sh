@@ -125,6 +125,8 @@ say "sphere285 span on the microbit: lean $lean_i, full core $full_i instruction
     echo "| bytes | function | object |"
     echo "| ----: | -------- | ------ |"
     mapsum "$lean_map" '/lean/core/' 12 | awk '$1 == "fn" {f = $3; sub(/^\.(text|rodata)(\.unlikely)?\./, "", f); o = $4; sub(/.*\//, "", o); printf "| %d | %s | %s |\n", $2, f, o}'
+    echo "<!-- FLASH bench $BENCH_TEXT -->"
+    echo "<!-- FLASH lean $LEAN_TEXT -->"
 } > "$LEAN_DIR/flash.tmp"
 if [ $fail -eq 0 ]; then
     mv "$LEAN_DIR/flash.tmp" "${LEAN_FLASH_MD:-$LEAN_DIR/flash.md}"

@@ -61,9 +61,13 @@ timeout 600 $FW_QEMU -M mps2-an386 $FW_QEMU_FLAGS -kernel "$FW_LEAN_M0BIG" > "$L
     { say "FAIL: $FW_LEAN_M0BIG exited with $?"; tail -3 "$LEAN_DIR/m0big.txt"; fail=1; }
 timeout 600 $FW_QEMU -M microbit $FW_QEMU_FLAGS -kernel "$FW_LEAN_FULL" > "$LEAN_DIR/m0full.txt" 2>&1 ||
     { say "FAIL: $FW_LEAN_FULL exited with $?"; tail -3 "$LEAN_DIR/m0full.txt"; fail=1; }
+timeout 600 $FW_QEMU -M microbit $FW_QEMU_FLAGS -kernel "$FW_LEAN_UNLIT" > "$LEAN_DIR/m0unlit.txt" 2>&1 ||
+    { say "FAIL: $FW_LEAN_UNLIT exited with $?"; tail -3 "$LEAN_DIR/m0unlit.txt"; fail=1; }
 sums() { awk '$1 == "R" && $4 == "span" { for (i = 6; i <= NF; i++) if ($i ~ /^sum=/) print $3, $5, substr($i, 5) }' "$@" | sort; }
 sums "$LEAN_DIR/host.txt" > "$LEAN_DIR/host.sums"
 sums "$LEAN_DIR/m0.txt" "$LEAN_DIR/m0big.txt" | sort -u > "$LEAN_DIR/lean.sums"
+sums "$LEAN_DIR/m0unlit.txt" "$LEAN_DIR/m0full.txt" >> "$LEAN_DIR/lean.sums" # (checked alike)
+sort -u -o "$LEAN_DIR/lean.sums" "$LEAN_DIR/lean.sums"
 n_lean=$(wc -l < "$LEAN_DIR/lean.sums")
 # the microbit's frames and the big image's must agree where both ran
 if [ "$(cut -d' ' -f1,2 "$LEAN_DIR/lean.sums" | uniq -d | wc -l)" -ne 0 ]; then
@@ -76,7 +80,7 @@ if [ "$n_lean" -eq 0 ] || [ -n "$missing" ]; then
     fail=1
 else
     fits=$(awk '$1 == "R" {print $3}' "$LEAN_DIR/m0.txt" | sort -u | tr '\n' ' ')
-    say "the lean image renders the host's frames: $n_lean frames, span mode (microbit: ${fits:-none})"
+    say "the lean images (and the full core's) render the host's frames: $n_lean frames, span mode (microbit: ${fits:-none})"
 fi
 
 # --- 4. host: refusals, and the lean core's frames = the full core's -------------------
@@ -89,6 +93,14 @@ else
     say "host: $(tail -1 "$LEAN_DIR/host-lean.txt"); $(grep -c '^F ' "$LEAN_DIR/host-lean.txt") frames as the full core's"
 fi
 
+"$LEAN_HOST_UNLIT" > "$LEAN_DIR/host-unlit.txt" || { say "FAIL: $LEAN_HOST_UNLIT"; grep FAIL "$LEAN_DIR/host-unlit.txt"; fail=1; }
+extra=$(comm -23 <(grep '^F ' "$LEAN_DIR/host-unlit.txt" | sort) <(grep '^F ' "$LEAN_DIR/host-full.txt" | sort))
+if [ -n "$extra" ] || [ "$(grep -c '^F ' "$LEAN_DIR/host-unlit.txt")" -eq 0 ]; then
+    say "FAIL: the host lean unlit core's frames differ from the full core's:"; printf '%s\n' "$extra" | head -5; fail=1
+else
+    say "host: $(tail -1 "$LEAN_DIR/host-unlit.txt") (ZS_NO_LIGHTING); $(grep -c '^F ' "$LEAN_DIR/host-unlit.txt") unlit frames as the full core's"
+fi
+
 # --- figures -------------------------------------------------------------------------
 full_map=${FW_LEAN_FULL%.elf}.map
 bench_map=${FW_BENCH_M0%.elf}.map
@@ -96,10 +108,11 @@ LEAN_TEXT=$(mapsum "$lean_map" '/lean/core/' | awk '$1 == "total" {print $2}')
 FULLP_TEXT=$(mapsum "$full_map" '/m0/core/' | awk '$1 == "total" {print $2}')
 BENCH_TEXT=$(mapsum "$bench_map" '/m0/core/' | awk '$1 == "total" {print $2}')
 ALL_TEXT=$("${ARM_SIZE:-arm-none-eabi-size}" -t ${FULL_OBJS:-} 2>/dev/null | awk 'END {print $1}')
+UNLIT_TEXT=$(mapsum "${FW_LEAN_UNLIT%.elf}.map" '/lean/unlit/' | awk '$1 == "total" {print $2}')
 LIBGCC=$(mapsum "$lean_map" 'libgcc\.a' | awk '$1 == "total" {print $2}')
 lean_i=$(awk '$1 == "R" && $3 == "sphere285" {s += substr($6, 7); n++} END {if (n) printf "%.3f M", s / n / 1e6}' "$LEAN_DIR/m0.txt")
 full_i=$(awk '$1 == "R" && $3 == "sphere285" {s += substr($6, 7); n++} END {if (n) printf "%.3f M", s / n / 1e6}' "$LEAN_DIR/m0full.txt")
-say "core .text linked on Cortex-M0 -Os: lean $LEAN_TEXT B; the same program on the full core $FULLP_TEXT B; the bench image (every feature used) $BENCH_TEXT B; all objects $ALL_TEXT B"
+say "core .text linked on Cortex-M0 -Os: lean $LEAN_TEXT B (with ZS_NO_LIGHTING $UNLIT_TEXT B); the same program on the full core $FULLP_TEXT B; the bench image (every feature used) $BENCH_TEXT B; all objects $ALL_TEXT B"
 say "sphere285 span on the microbit: lean $lean_i, full core $full_i instructions per frame"
 {
     echo "Core \`.text\` (code and read-only data of src/*.c) on Cortex-M0, -Os, linked with"
@@ -114,6 +127,8 @@ say "sphere285 span on the microbit: lean $lean_i, full core $full_i instruction
         "$FULLP_TEXT" "$(kb "$FULLP_TEXT")"
     printf '| `-DZS_LEAN` core, lean program | **%d B (%s KB)** | <= 12 KB: %s |\n' \
         "$LEAN_TEXT" "$(kb "$LEAN_TEXT")" "$([ "$LEAN_TEXT" -le 12288 ] && echo met || echo '**missed**')"
+    printf '| `-DZS_LEAN -DZS_NO_LIGHTING` core (unlit colours, as the bench scenes), lean program | %d B (%s KB) | - |\n' \
+        "$UNLIT_TEXT" "$(kb "$UNLIT_TEXT")"
     printf '| all of src/*.o, unlinked (arm-none-eabi-size) | %d B (%s KB) | - |\n' \
         "$ALL_TEXT" "$(kb "$ALL_TEXT")"
     echo ""
@@ -127,6 +142,7 @@ say "sphere285 span on the microbit: lean $lean_i, full core $full_i instruction
     mapsum "$lean_map" '/lean/core/' 12 | awk '$1 == "fn" {f = $3; sub(/^\.(text|rodata)(\.unlikely)?\./, "", f); o = $4; sub(/.*\//, "", o); printf "| %d | %s | %s |\n", $2, f, o}'
     echo "<!-- FLASH bench $BENCH_TEXT -->"
     echo "<!-- FLASH lean $LEAN_TEXT -->"
+    echo "<!-- FLASH unlit $UNLIT_TEXT -->"
 } > "$LEAN_DIR/flash.tmp"
 if [ $fail -eq 0 ]; then
     mv "$LEAN_DIR/flash.tmp" "${LEAN_FLASH_MD:-$LEAN_DIR/flash.md}"

@@ -221,7 +221,7 @@ static uint32_t face_color(const draw_ctx *c, uint32_t t)
     const zs_mesh *m = c->mesh;
     const uint16_t *idx = m->indices + 3u * t;
     uint32_t col;
-    if (c->vertex_color)
+    if (ZS_HAS_GOURAUD && c->vertex_color)
         col = WHITE;
     else if (m->face_colors)
         col = m->face_colors[t] & WHITE;
@@ -230,7 +230,7 @@ static uint32_t face_color(const draw_ctx *c, uint32_t t)
                        m->vertex_colors[idx[2]]);
     else
         col = m->color & WHITE;
-    if (c->lit && !c->vertex_light) {
+    if (ZS_HAS_LIGHTING && c->lit && !(ZS_HAS_GOURAUD && c->vertex_light)) {
         int64_t n[3];
         if (m->face_normals) {
             const int16_t *fn = m->face_normals + 3u * t;
@@ -518,10 +518,8 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     prepare_clip_rows(&c);
     c.lit = (uint8_t)(r->shade.light_count > 0 || r->shade.ambient != ZS_FX_ONE);
     c.vertex_light =
-        (uint8_t)(ZS_HAS_GOURAUD && r->shade.shading == ZS_SHADE_GOURAUD && c.lit &&
-                  m->vertex_normals != 0);
-    c.vertex_color = (uint8_t)(ZS_HAS_GOURAUD && r->shade.shading == ZS_SHADE_GOURAUD &&
-                               m->vertex_colors != 0);
+        (uint8_t)(r->shade.shading == ZS_SHADE_GOURAUD && c.lit && m->vertex_normals != 0);
+    c.vertex_color = (uint8_t)(r->shade.shading == ZS_SHADE_GOURAUD && m->vertex_colors != 0);
     c.tri_flags = ((c.vertex_light || c.vertex_color) ? ZS_TRI_MODULATE : 0u) |
                   ((r->shade.fog.enabled && !c.tex_slot) ? ZS_TRI_FOG : 0u) | /* texture.c fogs */
                   (c.tex_slot ? ZS_TRI_TEXTURED : 0u);

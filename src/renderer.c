@@ -271,7 +271,9 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
         (p->fog.enabled && p->fog.end <= p->fog.start) || p->background > 0xFFFFFFu ||
         p->fog.color > 0xFFFFFFu)
         return ZS_ERR_ARGUMENT;
-    for (i = 0; i < p->light_count; i++) {
+    if (!ZS_HAS_LIGHTING && (p->light_count != 0 || p->ambient != ZS_FX_ONE))
+        return ZS_ERR_MODE; /* ZS_NO_LIGHTING */
+    for (i = 0; ZS_HAS_LIGHTING && i < p->light_count; i++) {
         int64_t d[3];
         int32_t u[3];
         if (p->lights[i].intensity < 0)
@@ -284,7 +286,7 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
         dirs[i] = zs_vec3_make(u[0], u[1], u[2]);
     }
     /* a refused call changes nothing: commit only now */
-    for (i = 0; i < p->light_count; i++)
+    for (i = 0; ZS_HAS_LIGHTING && i < p->light_count; i++)
         r->priv.light_dir[i] = dirs[i];
     r->shade = *p;
     r->priv.out_format = (uint8_t)p->format;

@@ -120,6 +120,9 @@ extern "C" {
  *   ZS_RGB565_ONLY  the byte formats but ZS_FMT_RGB565_BE and ZS_FMT_RGB565
  *                   (RGB666, GRAY8, RGB888, ID16) are ZS_ERR_FORMAT
  *   ZS_LEAN         all of the above: flat (and lit) faces, span mode, RGB565
+ *   ZS_NO_LIGHTING  (not in ZS_LEAN) lighting: colours are drawn as they are;
+ *                   zs_frame_shading says ZS_ERR_MODE for a light or an ambient
+ *                   other than 1.0
  * A left-out feature changes no image of the others: a lean build renders
  * byte for byte what a full one does for what it supports. Give the same
  * -D to the files of your own that test ZS_HAS_* or ZS_CFG_FLAGS_OK. */
@@ -189,6 +192,11 @@ extern "C" {
 #define ZS_HAS_FORMATS 0
 #else
 #define ZS_HAS_FORMATS 1
+#endif
+#ifdef ZS_NO_LIGHTING
+#define ZS_HAS_LIGHTING 0
+#else
+#define ZS_HAS_LIGHTING 1
 #endif
 
 /* ------------------------------------------------------------------ */

@@ -170,6 +170,12 @@ static void frame(zs_renderer *r, const zs_camera *cam, const char *name, int f,
     size_t i;
     sp.format = fmt;
     sp.background = ZS_RGB(20, 30, 60);
+    if (lit && !ZS_HAS_LIGHTING) { /* ZS_NO_LIGHTING: refused, and the frame not drawn */
+        sp.ambient = ZS_FX_RATIO(3, 10);
+        expect("lighting", zs_frame_begin(r, cam, ZS_MODE_SPAN) == ZS_OK
+                               ? zs_frame_shading(r, &sp) : ZS_ERR_STATE, ZS_ERR_MODE, ZS_ERR_MODE);
+        return;
+    }
     if (lit) {
         sp.ambient = ZS_FX_RATIO(3, 10);
         sp.light_count = 1;

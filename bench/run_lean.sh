@@ -71,7 +71,7 @@ sort -u -o "$LEAN_DIR/lean.sums" "$LEAN_DIR/lean.sums"
 n_lean=$(wc -l < "$LEAN_DIR/lean.sums")
 # the microbit's frames and the big image's must agree where both ran
 if [ "$(cut -d' ' -f1,2 "$LEAN_DIR/lean.sums" | uniq -d | wc -l)" -ne 0 ]; then
-    say "FAIL: the lean image's frames differ between the two boards"; fail=1
+    say "FAIL: the images disagree on a frame (lean microbit, lean mps2-an386, unlit, full core)"; fail=1
 fi
 missing=$(comm -23 "$LEAN_DIR/lean.sums" "$LEAN_DIR/host.sums")
 if [ "$n_lean" -eq 0 ] || [ -n "$missing" ]; then

@@ -45,7 +45,7 @@ void zs_raster_begin(zs_renderer *r)
     r->priv.background = zs_background_word(r); /* packed once a frame */
     r->priv.row_fn = ZS_HAS_ZLINE && r->priv.mode == ZS_MODE_ZLINE         ? zs_zline_row
                      : ZS_HAS_PRIORITY && r->priv.mode == ZS_MODE_PRIORITY ? zs_priority_row
-                                                        : zs_span_row;
+                                                                           : zs_span_row;
     reverse_buckets(r);
 }
 

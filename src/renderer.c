@@ -400,7 +400,8 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
                 mono_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
         }
     }
-    if (ZS_HAS_ABUFFER && r->priv.aa_mode && kind != ZS_ROWS_MONO) /* the A-buffer rewrites the rows' edge pixels */
+    /* the A-buffer rewrites the rows' edge pixels */
+    if (ZS_HAS_ABUFFER && r->priv.aa_mode && kind != ZS_ROWS_MONO)
         zs_abuffer_rows(r, y0, rows, (uint8_t *)buf, stride);
     r->priv.next_row = y0 + rows;
     r->stats.rows += (uint32_t)rows;

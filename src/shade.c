@@ -73,7 +73,8 @@ void zs_shade_setup(const zs_renderer *r, zs_active *a, zs_active_color *ac, con
         a->pixel = (uint32_t)u.h * 0x10001u; /* the tag twice (see zs_pixel_word) */
         return;
     }
-    if (!ZS_HAS_PLANES_ || (t->color >> 24) == 0 || !r->priv.vshade) { /* no per-vertex colour: flat */
+    /* no per-vertex colour (or none built): flat */
+    if (!ZS_HAS_PLANES_ || (t->color >> 24) == 0 || !r->priv.vshade) {
         c[0] = c[1] = c[2] = t->color & WHITE;
     } else {
         for (k = 0; k < 3; k++)
@@ -138,7 +139,8 @@ void zs_fill_gouraud(const zs_renderer *r, const zs_active_color *a, int32_t dy,
     uint32_t dr = (uint32_t)a->cdx[0], dg = (uint32_t)a->cdx[1], db = (uint32_t)a->cdx[2];
     uint8_t *p = row + (size_t)x0 * r->priv.bpp;
     int x;
-    if (ZS_HAS_TEXTURE && r->priv.atex) { /* ZS_CFG_TEXTURE: a textured record's fill is texture.c's */
+    /* ZS_CFG_TEXTURE: a textured record's fill is texture.c's */
+    if (ZS_HAS_TEXTURE && r->priv.atex) {
         uint16_t ai = (uint16_t)(a - r->priv.acolor);
         const zs_active *act = &r->priv.active[ai];
         if ((r->priv.tris[act->tri].color >> 24) & ZS_TRI_TEXTURED) {

@@ -16,7 +16,11 @@
 #   ZSPAN_REQUIRED_CFLAGS  flags the zspan sources must be compiled with, whatever else you
 #                          pass: -fno-strict-aliasing (the core keeps its own record types in
 #                          the caller's arena, whatever type the caller declared it with)
-#   ZSPAN_CFLAGS           $(ZSPAN_INCLUDES) $(ZSPAN_REQUIRED_CFLAGS): for the zspan sources
+#   ZSPAN_FEATURES         (yours to set before the include; empty by default) features to
+#                          leave out as -D flags, e.g. -DZS_LEAN or -DZS_NO_TEXTURE
+#                          (include/zspan/zspan.h); give them to your own files too
+#   ZSPAN_CFLAGS           $(ZSPAN_INCLUDES) $(ZSPAN_REQUIRED_CFLAGS) $(ZSPAN_FEATURES): for
+#                          the zspan sources
 #   ZSPAN_VERSION          the version (file VERSION)
 #
 # With ZSPAN_BUILD set to a directory, it also gives rules for two archives there,
@@ -29,7 +33,8 @@ ZSPAN_DRIVER_SRCS := $(sort $(wildcard $(ZSPAN_DIR)/drivers/*.c))
 ZSPAN_SRCS := $(ZSPAN_CORE_SRCS) $(ZSPAN_DRIVER_SRCS)
 ZSPAN_INCLUDES := -I$(ZSPAN_DIR)/include
 ZSPAN_REQUIRED_CFLAGS := -fno-strict-aliasing
-ZSPAN_CFLAGS := $(ZSPAN_INCLUDES) $(ZSPAN_REQUIRED_CFLAGS)
+ZSPAN_FEATURES ?=
+ZSPAN_CFLAGS := $(ZSPAN_INCLUDES) $(ZSPAN_REQUIRED_CFLAGS) $(ZSPAN_FEATURES)
 ZSPAN_VERSION := $(strip $(file < $(ZSPAN_DIR)/VERSION))
 
 ifneq ($(strip $(ZSPAN_BUILD)),)

@@ -222,7 +222,7 @@ bench-firmware: $(BENCH_HOST) $(FW_BENCH_M4) $(FW_BENCH_M0) $(FW_BENCH_M0BIG) \
 	    FW_M0BIG=$(FW_BENCH_M0BIG) \
 	    FW_QEMU='$(FW_QEMU)' FW_QEMU_FLAGS='$(FW_QEMU_FLAGS)' ARM_SIZE=$(ARM_SIZE) \
 	    CORE_M0_OBJS='$(FW_CORE_M0_OBJS)' CORE_M4_OBJS='$(FW_CORE_M4_OBJS)' \
-	    BENCH_OUT=bench/results.md BENCH_WORK=$(BENCH_BUILD)/run \
+	    BENCH_OUT=bench/results.md BENCH_WORK=$(BENCH_BUILD)/run LEAN_FLASH='$(LEAN_FLASH_MD)' \
 	    bash bench/run_bench.sh
 
 # --- tests ----------------------------------------------------------------------------

@@ -206,6 +206,8 @@ zs_status zs_draw_bsp(zs_renderer *r, const zs_bsp *bsp, const zs_mat34 *model)
     int k;
     if (!r || !bsp)
         return ZS_ERR_NULL;
+    if (!ZS_HAS_PRIORITY)
+        return ZS_ERR_MODE; /* ZS_NO_PRIORITY: zs_draw walks no ranges */
     if (r->priv.state != ZS_STATE_OPEN)
         return ZS_ERR_STATE;
     st = zs_bsp_check(bsp);

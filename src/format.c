@@ -6,7 +6,7 @@
 #if defined(__OPTIMIZE_SIZE__)
 void zs_fill_flat(uint8_t *row, int x0, int x1, unsigned bpp, uint32_t pixel)
 {
-    zs_fill_flat_body(row, x0, x1, bpp, pixel);
+    zs_fill_flat_body(row, x0, x1, ZS_ONLY_565_ ? 2u : bpp, pixel);
 }
 #endif
 
@@ -48,6 +48,13 @@ void zs_pack_pixel(zs_format fmt, uint32_t rgb, uint8_t out[4])
 {
     uint32_t r = (rgb >> 16) & 255u, g = (rgb >> 8) & 255u, b = rgb & 255u;
     out[0] = out[1] = out[2] = out[3] = 0;
+    if (ZS_ONLY_565_) { /* the only formats zs_frame_shading takes */
+        if (fmt == ZS_FMT_RGB565_BE)
+            zs_store_rgb565_be(out, r, g, b);
+        else
+            zs_store_rgb565(out, r, g, b);
+        return;
+    }
     switch (fmt) {
     case ZS_FMT_RGB565_BE:
         zs_store_rgb565_be(out, r, g, b);
@@ -77,7 +84,8 @@ uint32_t zs_pixel_word(zs_format fmt, uint32_t rgb)
         uint8_t b[4];
     } u;
     zs_pack_pixel(fmt, rgb, u.b);
-    if (fmt == ZS_FMT_RGB565_BE || fmt == ZS_FMT_RGB565 || fmt == ZS_FMT_ID16) { /* 2 bytes */
+    if (ZS_ONLY_565_ || fmt == ZS_FMT_RGB565_BE || fmt == ZS_FMT_RGB565 ||
+        fmt == ZS_FMT_ID16) { /* 2 bytes */
         u.b[2] = u.b[0];
         u.b[3] = u.b[1];
     }
@@ -88,5 +96,6 @@ uint32_t zs_background_word(const zs_renderer *r)
 {
     /* ID16 marks "no triangle" with tag 0, whatever the background colour */
     return zs_pixel_word(r->shade.format,
-                         r->shade.format == ZS_FMT_ID16 ? 0 : r->shade.background);
+                         !ZS_ONLY_565_ && r->shade.format == ZS_FMT_ID16 ? 0
+                                                                         : r->shade.background);
 }

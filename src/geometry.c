@@ -221,7 +221,7 @@ static uint32_t face_color(const draw_ctx *c, uint32_t t)
     const zs_mesh *m = c->mesh;
     const uint16_t *idx = m->indices + 3u * t;
     uint32_t col;
-    if (c->vertex_color)
+    if (ZS_HAS_GOURAUD && c->vertex_color)
         col = WHITE;
     else if (m->face_colors)
         col = m->face_colors[t] & WHITE;
@@ -230,7 +230,7 @@ static uint32_t face_color(const draw_ctx *c, uint32_t t)
                        m->vertex_colors[idx[2]]);
     else
         col = m->color & WHITE;
-    if (c->lit && !c->vertex_light) {
+    if (ZS_HAS_LIGHTING && c->lit && !(ZS_HAS_GOURAUD && c->vertex_light)) {
         int64_t n[3];
         if (m->face_normals) {
             const int16_t *fn = m->face_normals + 3u * t;
@@ -308,7 +308,7 @@ static ZS_NOINLINE int transform_vertices(const draw_ctx *c, uint16_t base, uint
     for (i = 0; i < n; i++, v++) {
         int64_t xc, yc, w;
         to_clip(c, i, &xc, &yc, &w);
-        if (r->priv.vshade)
+        if (ZS_HAS_PLANES_ && r->priv.vshade)
             r->priv.vshade[base + i] = vertex_shade(c, i, w);
         if (test && (zs_outcode(r, xc, yc, w) & test))
             v->z = ZS_VERT_UNPROJECTED;
@@ -504,7 +504,7 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
         return ZS_ERR_INDEX;
     c.tex_slot = 0;
     if (m->uvs || m->texture) { /* texture.c checks it and takes a slot */
-        zs_status st = zs_tex_draw(r, m, &c.tex_slot);
+        zs_status st = ZS_HAS_TEXTURE ? zs_tex_draw(r, m, &c.tex_slot) : ZS_ERR_MODE;
         if (st != ZS_OK)
             return st;
     }
@@ -532,7 +532,7 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     vfit = m->vertex_count < room ? m->vertex_count : room;
     r->stats.verts_dropped += m->vertex_count - vfit;
     inside = transform_vertices(&c, base, vfit);
-    if (r->priv.tex_verts)
+    if (ZS_HAS_TEXTURE && r->priv.tex_verts)
         zs_tex_vertices(r, m, base, vfit, c.tex_slot);
     r->priv.n_verts = (uint16_t)(base + vfit);
     r->stats.verts_stored = r->priv.n_verts;
@@ -551,7 +551,7 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     }
     t = 0;
     t_end = r->priv.ranges ? 0u : m->triangle_count; /* zs_draw_bsp: ranges in order */
-    while (t < t_end || (r->priv.ranges && zs_next_range(r, &t, &t_end)))
+    while (t < t_end || (ZS_HAS_PRIORITY && r->priv.ranges && zs_next_range(r, &t, &t_end)))
     for (; t < t_end; t++) {
         const uint16_t *idx = m->indices + 3u * t;
         uint32_t i0 = idx[0], i1 = idx[1], i2 = idx[2];

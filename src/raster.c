@@ -43,9 +43,9 @@ void zs_raster_begin(zs_renderer *r)
     r->priv.n_sorted = 0;
     r->priv.steep = 0;
     r->priv.background = zs_background_word(r); /* packed once a frame */
-    r->priv.row_fn = r->priv.mode == ZS_MODE_ZLINE      ? zs_zline_row
-                     : r->priv.mode == ZS_MODE_PRIORITY ? zs_priority_row
-                                                        : zs_span_row;
+    r->priv.row_fn = ZS_HAS_ZLINE && r->priv.mode == ZS_MODE_ZLINE         ? zs_zline_row
+                     : ZS_HAS_PRIORITY && r->priv.mode == ZS_MODE_PRIORITY ? zs_priority_row
+                                                                           : zs_span_row;
     reverse_buckets(r);
 }
 

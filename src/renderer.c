@@ -49,8 +49,9 @@ size_t zs_arena_bytes(const zs_config *cfg)
     if (arena_bytes32(cfg) > SIZE_MAX)
         return 0; /* more than the address space: reported as a capacity error */
 #endif
+    /* flags & ZS_CFG_BUILT: the same (checked above), and the left-out terms fold away */
     return ZS_ARENA_BYTES_CFG(cfg->width, cfg->height, cfg->max_triangles, cfg->max_vertices,
-                              cfg->max_active_edges, cfg->flags);
+                              cfg->max_active_edges, cfg->flags & ZS_CFG_BUILT);
 }
 
 /* Built with -DZS_NO_MONO the 1-bit stages (mono.c, lines.c) are never
@@ -76,7 +77,8 @@ static ZS_NOINLINE void reset_shading(zs_renderer *r)
     r->shade = zs_shade_default();
     r->priv.bpp = (uint8_t)zs_format_bytes(r->shade.format);
     r->priv.out_format = (uint8_t)r->shade.format;
-    r->priv.rows_kind = r->priv.mode == ZS_MODE_WARNOCK ? ZS_ROWS_AREA : ZS_ROWS_BYTES;
+    r->priv.rows_kind =
+        ZS_HAS_WARNOCK && r->priv.mode == ZS_MODE_WARNOCK ? ZS_ROWS_AREA : ZS_ROWS_BYTES;
 }
 
 zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_config *cfg)
@@ -125,11 +127,11 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
          * other half of the word holding it (zline.c reads owners in pairs) */
         r->priv.zline_owner = carve(&cur, (size_t)cfg->width * 2u + 4u);
     }
-    if (cfg->flags & ZS_CFG_MONO) {
+    if (ZS_HAS_MONO && (cfg->flags & ZS_CFG_MONO)) {
         r->priv.mono_grey = carve(&cur, cfg->width);
         r->priv.mono_err = carve(&cur, (size_t)cfg->width * 2u);
     }
-    if (cfg->flags & ZS_CFG_LINES) {
+    if (ZS_HAS_MONO && (cfg->flags & ZS_CFG_LINES)) {
         if (!r->priv.mono_grey)
             r->priv.mono_grey = carve(&cur, cfg->width);
         r->priv.line_ids[0] = carve(&cur, (size_t)cfg->width * 2u);
@@ -142,17 +144,17 @@ zs_status zs_init(zs_renderer *r, void *arena, size_t arena_size, const zs_confi
         r->priv.line_next_rec = carve(&cur, (size_t)cfg->max_triangles * 6u);
         r->priv.line_vert_head = carve(&cur, (size_t)cfg->max_vertices * 2u);
     }
-    if (cfg->flags & ZS_CFG_PRIORITY) {
+    if (ZS_HAS_PRIORITY && (cfg->flags & ZS_CFG_PRIORITY)) {
         r->priv.sort_list = carve(&cur, (size_t)cfg->max_triangles * 2u);
         r->priv.sort_aux = carve(&cur, (size_t)cfg->max_triangles * 2u);
     }
-    if (cfg->flags & ZS_CFG_TEXTURE) {
+    if (ZS_HAS_TEXTURE && (cfg->flags & ZS_CFG_TEXTURE)) {
         r->priv.tex_verts = carve(&cur, (size_t)cfg->max_vertices * sizeof(zs_tex_vert));
         r->priv.atex = carve(&cur, a * sizeof(zs_active_tex));
         memset(r->priv.atex, 0, a * sizeof(zs_active_tex)); /* serial 0: made in no frame */
         r->priv.textures = carve(&cur, ZS_MAX_FRAME_TEXTURES * sizeof(void *));
     }
-    if (cfg->flags & ZS_CFG_ABUFFER)
+    if (ZS_HAS_ABUFFER && (cfg->flags & ZS_CFG_ABUFFER))
         r->priv.aa = zs_abuffer_carve(r, &cur);
     /* the widest guard band whose projected 28.4 coordinates fit int16 */
     dim = cfg->width > cfg->height ? cfg->width : cfg->height;
@@ -186,8 +188,11 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
     if (mode != ZS_MODE_SPAN && mode != ZS_MODE_ZLINE && mode != ZS_MODE_WARNOCK &&
         mode != ZS_MODE_PRIORITY)
         return ZS_ERR_MODE;
-    if (mode == ZS_MODE_ZLINE && (r->cfg.flags & ZS_CFG_NO_ZLINE))
+    if (mode == ZS_MODE_ZLINE && (!ZS_HAS_ZLINE || (r->cfg.flags & ZS_CFG_NO_ZLINE)))
         return ZS_ERR_MODE;
+    if ((mode == ZS_MODE_WARNOCK && !ZS_HAS_WARNOCK) ||
+        (mode == ZS_MODE_PRIORITY && !ZS_HAS_PRIORITY))
+        return ZS_ERR_MODE; /* left out of this build (ZS_NO_WARNOCK, ZS_NO_PRIORITY) */
     if (mode != ZS_MODE_PRIORITY && (r->cfg.flags & ZS_CFG_PRIORITY_ONLY))
         return ZS_ERR_MODE; /* no depth planes */
     if (cam->has_view != 1 || cam->has_projection != 1)
@@ -222,7 +227,8 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
     r->priv.tall_rows = 0xFFFFu; /* counted when Warnock mode or zs_pick needs it */
     r->priv.line_next = 0;
     r->priv.line_keep = 0;
-    zs_abuffer_frame(r);
+    if (ZS_HAS_ABUFFER)
+        zs_abuffer_frame(r);
     memset(r->priv.buckets, 0xFF, (size_t)r->cfg.height * 2u);
     if (r->priv.draw_starts)
         memset(r->priv.draw_starts, 0, ((size_t)r->cfg.max_triangles + 7u) / 8u);
@@ -240,10 +246,14 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
         return ZS_ERR_STATE;
     if (p->shading != ZS_SHADE_FLAT && p->shading != ZS_SHADE_GOURAUD)
         return ZS_ERR_MODE;
-    if ((r->cfg.flags & ZS_CFG_FLAT_ONLY) && (p->shading != ZS_SHADE_FLAT || p->fog.enabled))
+    if ((!ZS_HAS_GOURAUD || (r->cfg.flags & ZS_CFG_FLAT_ONLY)) &&
+        (p->shading != ZS_SHADE_FLAT || p->fog.enabled))
         return ZS_ERR_MODE;
     if ((unsigned)p->format >= (unsigned)ZS_FMT_COUNT && !MONO_BUILT(p->format))
         return ZS_ERR_FORMAT;
+    if (!ZS_HAS_FORMATS && (unsigned)p->format < (unsigned)ZS_FMT_COUNT &&
+        p->format != ZS_FMT_RGB565_BE && p->format != ZS_FMT_RGB565)
+        return ZS_ERR_FORMAT; /* ZS_RGB565_ONLY */
     if (zs_format_is_mono(p->format)) {
         if (p->mono & ~(unsigned)(ZS_MONO_DIFFUSE | ZS_MONO_LINES | ZS_MONO_INVERT) ||
             p->crease_deg >= 180)
@@ -262,7 +272,9 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
         (p->fog.enabled && p->fog.end <= p->fog.start) || p->background > 0xFFFFFFu ||
         p->fog.color > 0xFFFFFFu)
         return ZS_ERR_ARGUMENT;
-    for (i = 0; i < p->light_count; i++) {
+    if (!ZS_HAS_LIGHTING && (p->light_count != 0 || p->ambient != ZS_FX_ONE))
+        return ZS_ERR_MODE; /* ZS_NO_LIGHTING */
+    for (i = 0; ZS_HAS_LIGHTING && i < p->light_count; i++) {
         int64_t d[3];
         int32_t u[3];
         if (p->lights[i].intensity < 0)
@@ -275,7 +287,7 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
         dirs[i] = zs_vec3_make(u[0], u[1], u[2]);
     }
     /* a refused call changes nothing: commit only now */
-    for (i = 0; i < p->light_count; i++)
+    for (i = 0; ZS_HAS_LIGHTING && i < p->light_count; i++)
         r->priv.light_dir[i] = dirs[i];
     r->shade = *p;
     r->priv.out_format = (uint8_t)p->format;
@@ -287,7 +299,7 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
     r->priv.bpp = (uint8_t)zs_format_bytes(r->shade.format);
     r->priv.rows_kind = (zs_format_is_mono(p->format) || p->format == ZS_FMT_GRAY4)
                             ? ZS_ROWS_MONO /* a scratch line, then packed */
-                        : r->priv.mode == ZS_MODE_WARNOCK ? ZS_ROWS_AREA
+                        : ZS_HAS_WARNOCK && r->priv.mode == ZS_MODE_WARNOCK ? ZS_ROWS_AREA
                                                           : ZS_ROWS_BYTES;
     return ZS_OK;
 }
@@ -296,7 +308,7 @@ zs_status zs_frame_shading(zs_renderer *r, const zs_shade_params *p)
 /* One row of visibility: the row machinery, or area subdivision. */
 void zs_visible_row(zs_renderer *r, int y, uint8_t *row)
 {
-    if (r->priv.mode == ZS_MODE_WARNOCK)
+    if (ZS_HAS_WARNOCK && r->priv.mode == ZS_MODE_WARNOCK)
         zs_warnock_rows(r, y, 1, row, 0);
     else
         zs_raster_row(r, y, row);
@@ -314,7 +326,7 @@ static void mono_row(zs_renderer *r, int y, uint8_t *out)
     uint8_t *grey = r->priv.mono_grey;
     if (r->priv.out_format == ZS_FMT_GRAY4) {
         zs_visible_row(r, y, grey);
-        if (r->priv.aa_mode)
+        if (ZS_HAS_ABUFFER && r->priv.aa_mode)
             zs_abuffer_row(r, y, grey);
         zs_gray4_row(r, y, grey, out);
         return;
@@ -323,7 +335,7 @@ static void mono_row(zs_renderer *r, int y, uint8_t *out)
         zs_lines_row(r, y, grey); /* renders the rows it needs */
     } else {
         zs_visible_row(r, y, grey);
-        if (r->priv.aa_mode) /* span mode only */
+        if (ZS_HAS_ABUFFER && r->priv.aa_mode) /* span mode only */
             zs_abuffer_row(r, y, grey);
     }
     zs_mono_row(r, y, grey, out);
@@ -343,7 +355,7 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
         return ZS_ERR_ROW;
     /* byte formats first: the common call costs no more than before */
     kind = r->priv.rows_kind; /* per frame: byte rows, 1-bit rows, or Warnock */
-    if (kind != ZS_ROWS_MONO) {
+    if (!ZS_HAS_MONO || kind != ZS_ROWS_MONO) {
         need = (size_t)r->cfg.width * r->priv.bpp;
         units = (size_t)rows;
     } else {
@@ -366,7 +378,7 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
                 zs_lines_begin(r);
         }
 #endif
-        if (r->priv.aa_mode)
+        if (ZS_HAS_ABUFFER && r->priv.aa_mode)
             zs_abuffer_begin(r);
         r->priv.state = ZS_STATE_RENDERING;
     }
@@ -379,9 +391,9 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
     if (kind == ZS_ROWS_BYTES) {
         for (y = y0; y < y0 + rows; y++)
             zs_raster_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
-    } else if (kind == ZS_ROWS_AREA) { /* the band as one rectangle */
+    } else if (ZS_HAS_WARNOCK && kind == ZS_ROWS_AREA) { /* the band as one rectangle */
         zs_warnock_rows(r, y0, rows, (uint8_t *)buf, stride);
-    } else {
+    } else if (ZS_HAS_MONO) {
         for (y = y0; y < y0 + rows; y++) {
             if (r->priv.out_format == ZS_FMT_MONO_PAGE) /* a page holds 8 rows */
                 mono_row(r, y, (uint8_t *)buf + (size_t)(y / 8 - y0 / 8) * stride);
@@ -389,7 +401,8 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
                 mono_row(r, y, (uint8_t *)buf + (size_t)(y - y0) * stride);
         }
     }
-    if (r->priv.aa_mode && kind != ZS_ROWS_MONO) /* the A-buffer rewrites the rows' edge pixels */
+    /* the A-buffer rewrites the rows' edge pixels */
+    if (ZS_HAS_ABUFFER && r->priv.aa_mode && kind != ZS_ROWS_MONO)
         zs_abuffer_rows(r, y0, rows, (uint8_t *)buf, stride);
     r->priv.next_row = y0 + rows;
     r->stats.rows += (uint32_t)rows;

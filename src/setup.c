@@ -176,7 +176,7 @@ int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, int
     if (row0 >= row1 || col0 >= col1 ||
         ((row1 - row0) * (col1 - col0) <= 4 && xmax - xmin < 4096 && ymax - ymin < 4096 &&
          !covers_any(a, b, c, row0, row1, col0, col1))) {
-        if (r->priv.aa_mode)
+        if (ZS_HAS_ABUFFER && r->priv.aa_mode)
             return zs_abuffer_store(r, i0, i1, i2, color, tag);
 #ifndef ZS_NO_MONO
         if (r->priv.line_keep && r->priv.n_tris < r->cfg.max_triangles) {

@@ -67,13 +67,14 @@ void zs_shade_setup(const zs_renderer *r, zs_active *a, zs_active_color *ac, con
         uint16_t h;
         uint8_t b[4];
     } u;
-    if (r->shade.format == ZS_FMT_ID16) {
+    if (!ZS_ONLY_565_ && r->shade.format == ZS_FMT_ID16) {
         a->flags &= (uint8_t)~ZS_ACT_GOURAUD;
         u.h = (uint16_t)t->color;
         a->pixel = (uint32_t)u.h * 0x10001u; /* the tag twice (see zs_pixel_word) */
         return;
     }
-    if ((t->color >> 24) == 0 || !r->priv.vshade) { /* no per-vertex colour: flat */
+    /* no per-vertex colour (or none built): flat */
+    if (!ZS_HAS_PLANES_ || (t->color >> 24) == 0 || !r->priv.vshade) {
         c[0] = c[1] = c[2] = t->color & WHITE;
     } else {
         for (k = 0; k < 3; k++)
@@ -82,7 +83,7 @@ void zs_shade_setup(const zs_renderer *r, zs_active *a, zs_active_color *ac, con
          * through zs_fill_gouraud to texture.c (bit 26 is no channel's) */
         c[0] ^= ((t->color >> 24) & ZS_TRI_TEXTURED) << 24;
     }
-    if (c[0] == c[1] && c[1] == c[2]) {
+    if (!ZS_HAS_PLANES_ || (c[0] == c[1] && c[1] == c[2])) {
         a->flags &= (uint8_t)~ZS_ACT_GOURAUD;
         a->pixel = zs_pixel_word(r->shade.format, c[0]);
         return;
@@ -138,7 +139,8 @@ void zs_fill_gouraud(const zs_renderer *r, const zs_active_color *a, int32_t dy,
     uint32_t dr = (uint32_t)a->cdx[0], dg = (uint32_t)a->cdx[1], db = (uint32_t)a->cdx[2];
     uint8_t *p = row + (size_t)x0 * r->priv.bpp;
     int x;
-    if (r->priv.atex) { /* ZS_CFG_TEXTURE: a textured record's fill is texture.c's */
+    /* ZS_CFG_TEXTURE: a textured record's fill is texture.c's */
+    if (ZS_HAS_TEXTURE && r->priv.atex) {
         uint16_t ai = (uint16_t)(a - r->priv.acolor);
         const zs_active *act = &r->priv.active[ai];
         if ((r->priv.tris[act->tri].color >> 24) & ZS_TRI_TEXTURED) {

@@ -190,7 +190,7 @@ static ZS_NOINLINE void put_span(const walk_ctx *w, const zs_active *a, int32_t 
     zs_renderer *r = w->r;
     if (!a)
         zs_fill_flat(w->row, x0, x1, r->priv.bpp, r->priv.background);
-    else if (a->flags & ZS_ACT_GOURAUD)
+    else if (ZS_HAS_PLANES_ && (a->flags & ZS_ACT_GOURAUD))
         zs_fill_gouraud(r, &r->priv.acolor[a - r->priv.active], w->y - a->y0, w->row, x0, x1);
     else
         zs_fill_flat(w->row, x0, x1, r->priv.bpp, a->pixel);

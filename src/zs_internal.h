@@ -8,6 +8,13 @@
 
 #define ZS_NONE 0xFFFFu
 
+/* Colour planes and per-vertex shade words: Gouraud and fog, and the light
+ * of textured records (zspan.h: ZS_NO_GOURAUD, ZS_NO_TEXTURE). */
+#define ZS_HAS_PLANES_ (ZS_HAS_GOURAUD || ZS_HAS_TEXTURE)
+/* Every row is RGB565, either byte order: no other byte format (ZS_RGB565_ONLY)
+ * and no 1-bit stage's scratch line (GRAY8 or ID16; ZS_NO_MONO). */
+#define ZS_ONLY_565_ (!ZS_HAS_FORMATS && !ZS_HAS_MONO)
+
 /* zs_render_rows' paths (priv.rows_kind): the row machinery into byte
  * rows, into a 1-bit format's scratch line, or Warnock mode's rectangles. */
 enum { ZS_ROWS_BYTES = 0, ZS_ROWS_MONO, ZS_ROWS_AREA };

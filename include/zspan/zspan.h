@@ -91,6 +91,115 @@ extern "C" {
 #endif
 
 /* ------------------------------------------------------------------ */
+/* Compile-time feature selection                                       */
+/* ------------------------------------------------------------------ */
+
+/* Build src/ with -DZS_NO_<feature> (or -DZS_LEAN for all of them) and link
+ * with -ffunction-sections -fdata-sections -Wl,--gc-sections: the left-out
+ * stage is never called, so the linker drops its code (`make check-lean`
+ * checks it and measures the footprint). Asking for a left-out feature at
+ * run time is refused, never half done: a config flag is ZS_ERR_ARGUMENT
+ * from zs_init (as an unknown bit), a mode ZS_ERR_MODE, a pixel format
+ * ZS_ERR_FORMAT (as an unknown one).
+ *   ZS_NO_TEXTURE   texture mapping (texture.c): ZS_CFG_TEXTURE refused; a
+ *                   mesh with uvs or a texture is ZS_ERR_MODE from zs_draw
+ *   ZS_NO_ABUFFER   the A-buffer (abuffer.c): ZS_CFG_ABUFFER refused;
+ *                   zs_frame_antialias and zs_draw_opacity say ZS_ERR_MODE
+ *   ZS_NO_ZLINE     the z-buffer line (zline.c): ZS_MODE_ZLINE is ZS_ERR_MODE
+ *   ZS_NO_WARNOCK   area subdivision (warnock.c): ZS_MODE_WARNOCK is ZS_ERR_MODE
+ *   ZS_NO_PRIORITY  list priority (priority.c, bsp.c, depth_sort.c):
+ *                   ZS_MODE_PRIORITY is ZS_ERR_MODE, ZS_CFG_PRIORITY and
+ *                   ZS_CFG_PRIORITY_ONLY refused, zs_draw_bsp ZS_ERR_MODE
+ *   ZS_NO_GOURAUD   per-vertex colour and fog (the colour planes of shade.c):
+ *                   ZS_SHADE_GOURAUD or fog is ZS_ERR_MODE from
+ *                   zs_frame_shading, as with ZS_CFG_FLAT_ONLY (flat and lit
+ *                   faces work; textures still light through their planes)
+ *   ZS_NO_MONO      the 1-bit formats, hidden lines and ZS_FMT_GRAY4
+ *                   (mono.c, lines.c, gray4.c): those formats are ZS_ERR_FORMAT,
+ *                   ZS_CFG_MONO and ZS_CFG_LINES refused
+ *   ZS_RGB565_ONLY  the byte formats but ZS_FMT_RGB565_BE and ZS_FMT_RGB565
+ *                   (RGB666, GRAY8, RGB888, ID16) are ZS_ERR_FORMAT
+ *   ZS_LEAN         all of the above: flat (and lit) faces, span mode, RGB565
+ *   ZS_NO_LIGHTING  (not in ZS_LEAN) lighting: colours are drawn as they are;
+ *                   zs_frame_shading says ZS_ERR_MODE for a light or an ambient
+ *                   other than 1.0
+ * A left-out feature changes no image of the others: a lean build renders
+ * byte for byte what a full one does for what it supports. Give the same
+ * -D to the files of your own that test ZS_HAS_* or ZS_CFG_FLAGS_OK. */
+#ifdef ZS_LEAN
+#ifndef ZS_NO_TEXTURE
+#define ZS_NO_TEXTURE
+#endif
+#ifndef ZS_NO_ABUFFER
+#define ZS_NO_ABUFFER
+#endif
+#ifndef ZS_NO_ZLINE
+#define ZS_NO_ZLINE
+#endif
+#ifndef ZS_NO_WARNOCK
+#define ZS_NO_WARNOCK
+#endif
+#ifndef ZS_NO_PRIORITY
+#define ZS_NO_PRIORITY
+#endif
+#ifndef ZS_NO_GOURAUD
+#define ZS_NO_GOURAUD
+#endif
+#ifndef ZS_NO_MONO
+#define ZS_NO_MONO
+#endif
+#ifndef ZS_RGB565_ONLY
+#define ZS_RGB565_ONLY
+#endif
+#endif
+/* 1 if this build has the feature, else 0: for plain `if`s the compiler folds. */
+#ifdef ZS_NO_TEXTURE
+#define ZS_HAS_TEXTURE 0
+#else
+#define ZS_HAS_TEXTURE 1
+#endif
+#ifdef ZS_NO_ABUFFER
+#define ZS_HAS_ABUFFER 0
+#else
+#define ZS_HAS_ABUFFER 1
+#endif
+#ifdef ZS_NO_ZLINE
+#define ZS_HAS_ZLINE 0
+#else
+#define ZS_HAS_ZLINE 1
+#endif
+#ifdef ZS_NO_WARNOCK
+#define ZS_HAS_WARNOCK 0
+#else
+#define ZS_HAS_WARNOCK 1
+#endif
+#ifdef ZS_NO_PRIORITY
+#define ZS_HAS_PRIORITY 0
+#else
+#define ZS_HAS_PRIORITY 1
+#endif
+#ifdef ZS_NO_GOURAUD
+#define ZS_HAS_GOURAUD 0
+#else
+#define ZS_HAS_GOURAUD 1
+#endif
+#ifdef ZS_NO_MONO
+#define ZS_HAS_MONO 0
+#else
+#define ZS_HAS_MONO 1
+#endif
+#ifdef ZS_RGB565_ONLY
+#define ZS_HAS_FORMATS 0
+#else
+#define ZS_HAS_FORMATS 1
+#endif
+#ifdef ZS_NO_LIGHTING
+#define ZS_HAS_LIGHTING 0
+#else
+#define ZS_HAS_LIGHTING 1
+#endif
+
+/* ------------------------------------------------------------------ */
 /* Fixed point                                                          */
 /* ------------------------------------------------------------------ */
 
@@ -206,15 +315,22 @@ const char *zs_strerror(zs_status status);
                                     triangle (24 B each saved); every mode but
                                     ZS_MODE_PRIORITY is refused (ZS_ERR_MODE), and
                                     so is ZS_CFG_ABUFFER (ZS_ERR_ARGUMENT) */
-/* Every flag zs_init accepts; a bit outside it is ZS_ERR_ARGUMENT (one list,
- * so that the core and its tests cannot disagree on which flags exist). */
+/* Every flag there is; zs_init accepts those of ZS_CFG_BUILT (all of them in a
+ * full build) and says ZS_ERR_ARGUMENT for any other bit (one list, so that
+ * the core and its tests cannot disagree on which flags exist). */
 #define ZS_CFG_ALL                                                                 \
     (ZS_CFG_NO_ZLINE | ZS_CFG_FLAT_ONLY | ZS_CFG_MONO | ZS_CFG_LINES | ZS_CFG_PRIORITY | \
      ZS_CFG_TEXTURE | ZS_CFG_ABUFFER | ZS_CFG_PRIORITY_ONLY)
-/* Does zs_init accept these flags? Only bits of ZS_CFG_ALL, and not the A-buffer
- * with textures (its fragments carry none) or without depth planes. */
+/* The flags of ZS_CFG_ALL whose features this build has (see ZS_NO_TEXTURE). */
+#define ZS_CFG_BUILT                                                               \
+    (ZS_CFG_ALL & ~((ZS_HAS_TEXTURE ? 0u : ZS_CFG_TEXTURE) |                        \
+                    (ZS_HAS_ABUFFER ? 0u : ZS_CFG_ABUFFER) |                        \
+                    (ZS_HAS_PRIORITY ? 0u : (ZS_CFG_PRIORITY | ZS_CFG_PRIORITY_ONLY)) | \
+                    (ZS_HAS_MONO ? 0u : (ZS_CFG_MONO | ZS_CFG_LINES))))
+/* Does zs_init accept these flags? Only bits of ZS_CFG_BUILT, and not the
+ * A-buffer with textures (its fragments carry none) or without depth planes. */
 #define ZS_CFG_FLAGS_OK(flags)                                                     \
-    (((flags) & ~(unsigned)ZS_CFG_ALL) == 0u &&                                   \
+    (((flags) & ~(unsigned)ZS_CFG_BUILT) == 0u &&                                 \
      !(((flags) & ZS_CFG_ABUFFER) && ((flags) & (ZS_CFG_TEXTURE | ZS_CFG_PRIORITY_ONLY))))
 
 /* Sizes of the records the arena holds (checked against sizeof in src/). */

@@ -31,6 +31,7 @@
  */
 #include "bench_scenes.h"
 #include "port.h"
+#include "bench_fw_timing.h"
 
 #include <string.h>
 
@@ -63,7 +64,7 @@ int main(void)
     size_t free_bytes;
     uint8_t *free_ram = port_free_ram(&free_bytes);
     uint32_t ipt, overhead_milli;
-    int quick = 0, per_row = 0, si, errors = 0, i, only_scene = 0, notex = 0;
+    int quick = 0, per_row = 0, si, errors = 0, only_scene = 0, notex = 0;
     int mode_lo = 0, mode_hi = 2;
     const char *board = port_this_board.name;
 
@@ -82,17 +83,7 @@ int main(void)
     }
     port_timer_start();
     ipt = port_calibrate_ipt_milli();
-    /* Cost (x1000 instructions) of one timed section with nothing inside,
-     * measured with the same code shape as the per-row sections below. */
-    {
-        uint64_t acc = 0;
-        for (i = 0; i < 4096; i++) {
-            uint64_t a = port_ticks();
-            uint64_t b = port_ticks();
-            acc += b - a;
-        }
-        overhead_milli = (uint32_t)(acc * ipt / 4096u);
-    }
+    overhead_milli = bench_section_overhead_milli(ipt);
     sh_printf("I %s %s ipt_milli=%u nominal=%u overhead_milli=%u free_ram=%u\n", board,
               port_this_board.cpu, (unsigned)ipt, (unsigned)port_this_board.nominal_ipt_milli,
               (unsigned)overhead_milli, (unsigned)free_bytes);
@@ -154,14 +145,8 @@ int main(void)
                     st = bench_submit(&r, &cam, s, f, mode);
                     b = port_ticks();
                     ticks += b - a;
-                    for (y = 0; st == ZS_OK && y < BENCH_H; y++) {
-                        a = port_ticks();
-                        st = zs_render_rows(&r, y, 1, line, sizeof line);
-                        b = port_ticks();
-                        ticks += b - a;
-                        sections++;
-                        sum = bench_fnv1a(sum, line, sizeof line);
-                    }
+                    if (st == ZS_OK)
+                        st = bench_timed_rows(&r, line, sizeof line, &ticks, &sections, &sum);
                 }
                 if (st != ZS_OK) {
                     sh_printf("E %s %s %s %d %s\n", board, s->name, mode_name(mode), f,

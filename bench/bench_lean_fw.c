@@ -19,6 +19,7 @@
  */
 #include "bench_scenes.h"
 #include "port.h"
+#include "bench_fw_timing.h"
 
 static uint8_t line[BENCH_W * 2];
 
@@ -29,20 +30,12 @@ int main(void)
     size_t free_bytes;
     uint8_t *free_ram = port_free_ram(&free_bytes);
     uint32_t ipt, overhead_milli;
-    int si, i, errors = 0;
+    int si, errors = 0;
     const char *board = port_this_board.name;
 
     port_timer_start();
     ipt = port_calibrate_ipt_milli();
-    {
-        uint64_t acc = 0;
-        for (i = 0; i < 4096; i++) {
-            uint64_t a = port_ticks();
-            uint64_t b = port_ticks();
-            acc += b - a;
-        }
-        overhead_milli = (uint32_t)(acc * ipt / 4096u);
-    }
+    overhead_milli = bench_section_overhead_milli(ipt);
     sh_printf("I %s free_ram=%u\n", board, (unsigned)free_bytes);
     if (bench_camera(&cam) != ZS_OK) {
         sh_printf("E %s camera\n", board);
@@ -63,18 +56,11 @@ int main(void)
         for (f = 0; st == ZS_OK && f < BENCH_FRAMES; f++) {
             uint64_t ticks, instr_milli, a = port_ticks(), b;
             uint32_t sum = BENCH_FNV_BASIS, sections = 1;
-            int y;
             st = bench_submit(&r, &cam, s, f, ZS_MODE_SPAN);
             b = port_ticks();
             ticks = b - a;
-            for (y = 0; st == ZS_OK && y < BENCH_H; y++) {
-                a = port_ticks();
-                st = zs_render_rows(&r, y, 1, line, sizeof line);
-                b = port_ticks();
-                ticks += b - a;
-                sections++;
-                sum = bench_fnv1a(sum, line, sizeof line);
-            }
+            if (st == ZS_OK)
+                st = bench_timed_rows(&r, line, sizeof line, &ticks, &sections, &sum);
             if (st != ZS_OK)
                 break;
             instr_milli = ticks * ipt;

@@ -84,7 +84,7 @@ BENCH_TARGETS += bench-firmware
 # --- converter ----------------------------------------------------------------
 # Its importer and option parser are the application layer's (app/).
 MESHC_APP_SRCS := app/zs_import.c app/zs_opts.c
-$(MESHC): tools/zspan-meshc.c $(MESHC_APP_SRCS) $(MESHC_APP_SRCS:.c=.h) | deps
+$(MESHC): tools/zspan-meshc.c $(MESHC_APP_SRCS) $(MESHC_APP_SRCS:.c=.h) $(wildcard include/zspan/*.h) | deps
 	@mkdir -p $(@D)
 	$(CC) $(MESHC_CFLAGS) -Iinclude -Iapp -o $@ tools/zspan-meshc.c $(MESHC_APP_SRCS) $(MESHC_LIBS)
 

@@ -79,9 +79,9 @@
 /* Version of the library (semantic versioning; 0.x: the API may still change
  * between minor versions). CHANGELOG.md lists what changed. */
 #define ZSPAN_VERSION_MAJOR 0
-#define ZSPAN_VERSION_MINOR 4
+#define ZSPAN_VERSION_MINOR 5
 #define ZSPAN_VERSION_PATCH 0
-#define ZSPAN_VERSION_STRING "0.4.0"
+#define ZSPAN_VERSION_STRING "0.5.0"
 
 #include <stddef.h>
 #include <stdint.h>

@@ -88,19 +88,6 @@ static ZS_NOINLINE void model_view(draw_ctx *c)
     }
 }
 
-/* m * p for p in int16 range. Cortex-M0 has no 32x32->64 multiply: there
- * it is two 32-bit products (|hi * p| <= 2^30, |lo * p| < 2^31) instead of
- * a helper call; elsewhere one widening multiply. */
-static inline int64_t mul_32x16(int32_t m, int32_t p)
-{
-#if defined(__ARM_ARCH_6M__)
-    int32_t hi = zs_asr32(m, 16), lo = (int32_t)((uint32_t)m & 0xFFFFu);
-    return (int64_t)(hi * p) * 65536 + lo * p;
-#else
-    return (int64_t)m * p;
-#endif
-}
-
 /* Model-space vertex i to clip space (Q16.16, not saturated: clip
  * coordinates may pass 2^31 where a narrow field of view or a far vertex
  * magnifies eye coordinates; outcodes and the clipper take them whole). */
@@ -110,9 +97,9 @@ static inline void fast_clip(const draw_ctx *c, int32_t px, int32_t py, int32_t 
                              int64_t *xc, int64_t *yc, int64_t *w)
 {
     const int32_t *m0 = c->clip[0], *m1 = c->clip[1], *m2 = c->clip[2];
-    int64_t sx = mul_32x16(m0[0], px) + mul_32x16(m0[1], py) + mul_32x16(m0[2], pz) + 32768;
-    int64_t sy = mul_32x16(m1[0], px) + mul_32x16(m1[1], py) + mul_32x16(m1[2], pz) + 32768;
-    int64_t sw = mul_32x16(m2[0], px) + mul_32x16(m2[1], py) + mul_32x16(m2[2], pz) + 32768;
+    int64_t sx = zs_mul_32x16(m0[0], px) + zs_mul_32x16(m0[1], py) + zs_mul_32x16(m0[2], pz) + 32768;
+    int64_t sy = zs_mul_32x16(m1[0], px) + zs_mul_32x16(m1[1], py) + zs_mul_32x16(m1[2], pz) + 32768;
+    int64_t sw = zs_mul_32x16(m2[0], px) + zs_mul_32x16(m2[1], py) + zs_mul_32x16(m2[2], pz) + 32768;
     *xc = zs_asr64(sx, 16) + c->clip_t[0];
     *yc = zs_asr64(sy, 16) + c->clip_t[1];
     *w = zs_asr64(sw, 16) + c->clip_t[2];
@@ -295,6 +282,91 @@ static ZS_NOINLINE int box_inside(const draw_ctx *c, uint32_t n)
     return 1;
 }
 
+/* The clip rows of a fast draw for project_inside, with the translations
+ * and rounding folded into one constant per row (Cortex-M4 and the like:
+ * each row is a 64-bit multiply-accumulate chain); 0 where they do not fit. */
+#ifndef ZS_SPLIT_MUL
+typedef struct inside_rows {
+    int64_t k[3]; /* 2^16 clip_t + 2^15 */
+} inside_rows;
+
+static int inside_rows_init(const draw_ctx *c, inside_rows *ir)
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        if (abs64(c->clip_t[k]) >= ((int64_t)1 << 46))
+            return 0;
+        ir->k[k] = c->clip_t[k] * 65536 + 32768;
+    }
+    return 1;
+}
+#else
+/* Cortex-M0: each coefficient m split as hi * 2^14 + lo, lo in [0, 2^14),
+ * so that a row's three products of each part sum in 32 bits (where the
+ * hi parts are small, as for every real mesh), no 64-bit product. */
+typedef struct inside_rows {
+    int32_t hi[3][3], lo[3][3], t[3];
+} inside_rows;
+
+static int inside_rows_init(const draw_ctx *c, inside_rows *ir)
+{
+    int k, j;
+    for (k = 0; k < 3; k++) {
+        int32_t sum = 0;
+        if (abs64(c->clip_t[k]) >= ((int64_t)1 << 30))
+            return 0;
+        ir->t[k] = (int32_t)c->clip_t[k];
+        for (j = 0; j < 3; j++) {
+            int32_t m = c->clip[k][j];
+            ir->hi[k][j] = zs_asr32(m, 14);
+            ir->lo[k][j] = (int32_t)((uint32_t)m & 0x3FFFu);
+            sum += ir->hi[k][j] < 0 ? -ir->hi[k][j] : ir->hi[k][j];
+        }
+        if (sum >= (1 << 15)) /* |sum of hi * p| < 2^30 */
+            return 0;
+    }
+    return 1;
+}
+
+/* floor((m . p + 2^15) / 2^16) + t for row k: the hi sum is a * 4 + b, and
+ * hi * 2^14 = a * 2^16 + b * 2^14, so the rest fits 32 bits. */
+static inline int32_t inside_row(const inside_rows *ir, int k, int32_t px, int32_t py,
+                                 int32_t pz)
+{
+    int32_t sh = ir->hi[k][0] * px + ir->hi[k][1] * py + ir->hi[k][2] * pz;
+    int32_t sl = ir->lo[k][0] * px + ir->lo[k][1] * py + ir->lo[k][2] * pz; /* < 1.5 * 2^30 */
+    return zs_asr32(sh, 2) + zs_asr32((sh & 3) * 16384 + sl + 32768, 16) + ir->t[k];
+}
+#endif
+
+/* The first n vertices of a fast draw that box_inside found inside near,
+ * far and the guard band, with far below 2^29: clip coordinates (as
+ * fast_clip's, which fit 32 bits here) and projection in one pass. */
+static ZS_NOINLINE void project_inside(const draw_ctx *c, const inside_rows *ir,
+                                       const zs_proj *p, zs_vert *v, uint32_t n)
+{
+    const int16_t *pos = c->mesh->positions, *end = pos + 3u * n;
+#ifndef ZS_SPLIT_MUL
+    const int32_t *m0 = c->clip[0], *m1 = c->clip[1], *m2 = c->clip[2];
+#endif
+    for (; pos != end; pos += 3, v++) {
+        int32_t px = pos[0], py = pos[1], pz = pos[2], xc, yc, w;
+#ifndef ZS_SPLIT_MUL
+        xc = (int32_t)zs_asr64(ir->k[0] + (int64_t)m0[0] * px + (int64_t)m0[1] * py +
+                                   (int64_t)m0[2] * pz, 16);
+        yc = (int32_t)zs_asr64(ir->k[1] + (int64_t)m1[0] * px + (int64_t)m1[1] * py +
+                                   (int64_t)m1[2] * pz, 16);
+        w = (int32_t)zs_asr64(ir->k[2] + (int64_t)m2[0] * px + (int64_t)m2[1] * py +
+                                  (int64_t)m2[2] * pz, 16);
+#else
+        xc = inside_row(ir, 0, px, py, pz);
+        yc = inside_row(ir, 1, px, py, pz);
+        w = inside_row(ir, 2, px, py, pz);
+#endif
+        zs_project_fast(p, xc, yc, w, v);
+    }
+}
+
 /* Vertices base .. base + n - 1 of the pool from the mesh's first n. Out of
  * line (called once a draw), so its locals stay off zs_draw's frame, which
  * lies under the clipper's. */
@@ -303,8 +375,18 @@ static ZS_NOINLINE int transform_vertices(const draw_ctx *c, uint16_t base, uint
     zs_renderer *r = c->r;
     zs_vert *v = &r->priv.verts[base];
     uint32_t i;
+    zs_proj p;
+    inside_rows ir;
     /* a mesh wholly inside needs no outcode per vertex */
-    unsigned test = box_inside(c, n) ? 0u : (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_GUARD);
+    int inside = box_inside(c, n);
+    unsigned test = inside ? 0u : (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_GUARD);
+    /* every vertex within near, far and the guard band suits
+     * zs_project_fast when far is below 2^29 */
+    int fast = zs_proj_init(r, &p) && r->cam.far_z < ((int32_t)1 << 29);
+    if (inside && fast && !r->priv.vshade && inside_rows_init(c, &ir)) {
+        project_inside(c, &ir, &p, v, n);
+        return 1;
+    }
     for (i = 0; i < n; i++, v++) {
         int64_t xc, yc, w;
         to_clip(c, i, &xc, &yc, &w);
@@ -312,6 +394,8 @@ static ZS_NOINLINE int transform_vertices(const draw_ctx *c, uint16_t base, uint
             r->priv.vshade[base + i] = vertex_shade(c, i, w);
         if (test && (zs_outcode(r, xc, yc, w) & test))
             v->z = ZS_VERT_UNPROJECTED;
+        else if (fast) /* near <= w <= far, |xc|, |yc| <= guard * w: 32 bits */
+            zs_project_fast(&p, (int32_t)xc, (int32_t)yc, (int32_t)w, v);
         else /* near <= w <= far: 32 bits */
             zs_project(r, xc, yc, (int32_t)w, &v->x, &v->y, &v->z);
     }

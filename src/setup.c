@@ -8,21 +8,18 @@
  * the area below 2^37 (see raster.c). */
 #include "zs_internal.h"
 
-/* Number of left shifts that bring 0 < v < 2^31 into [2^30, 2^31). */
-static unsigned norm_shift(uint32_t v)
+int zs_proj_init(const zs_renderer *r, zs_proj *p)
 {
-#if defined(__GNUC__) && __SIZEOF_INT__ == 4
-    return (unsigned)__builtin_clz(v) - 1u;
-#elif defined(__GNUC__) && __SIZEOF_LONG__ == 4 /* 16-bit int (AVR): clz of a long */
-    return (unsigned)__builtin_clzl(v) - 1u;
-#else
-    unsigned s = 0;
-    while (v < 0x40000000u) {
-        v <<= 1;
-        s++;
-    }
-    return s;
-#endif
+    int64_t hw = 8 * (int64_t)r->cfg.width, hh = 8 * (int64_t)r->cfg.height;
+    uint64_t ds = (uint64_t)r->priv.depth_scale;
+    p->hw = (int32_t)hw;
+    p->nhh = (int32_t)-hh;
+    p->xk = hw * ((int64_t)1 << 28) + ((int64_t)1 << 27);
+    p->yk = hh * ((int64_t)1 << 28) + ((int64_t)1 << 27) - 1;
+    p->near_z = (uint32_t)r->cam.near_z;
+    p->ds_lo = (uint32_t)(ds & 0xFFFFFFFFu);
+    p->ds_hi = (uint32_t)(ds >> 32);
+    return ds != 0;
 }
 
 /* |v| * inv for inv < 2^32 and a product below 2^64 (so the high word of
@@ -42,23 +39,43 @@ static int64_t mul_floor_shift(int64_t v, uint32_t inv, unsigned sh)
     return -(int64_t)((mag_mul((uint64_t)0 - (uint64_t)v, inv) + (((uint64_t)1 << sh) - 1u)) >> sh);
 }
 
+/* |v| <= 7 w, for w < 2^29 (so 8 w fits 32 bits) and v fitting 32 bits. */
+static int within7(int64_t v, int32_t w)
+{
+    return v >= -7 * (int64_t)w && v <= 7 * (int64_t)w;
+}
+
 /* One division per vertex: 1/w as a normalised reciprocal, then products.
  *   w * 2^s in [2^30, 2^31), inv = 2^61 / (w * 2^s) in (2^30, 2^31],
  *   xc / w = xc * inv * 2^(s - 61).
  * Inside the guard band |xc|, |yc| <= guard * w, so xc / w fits Q28 easily.
  * Window depth z = far (w - near) / ((far - near) w) = A (1 - near / w) with
- * A = far / (far - near) precomputed per frame (depth_scale, Q30). */
+ * A = far / (far - near) precomputed per frame (depth_scale, Q30). The
+ * common case, w below 2^29 (8192 units), in 32-bit words (zs_project_fast);
+ * far vertices and near close to far here. */
 void zs_project(const zs_renderer *r, int64_t xc, int64_t yc, int32_t w, int16_t *x,
                 int16_t *y, uint32_t *z)
 {
     int64_t hw = 8 * (int64_t)r->cfg.width; /* half the width in 1/16 px */
     int64_t hh = 8 * (int64_t)r->cfg.height;
-    unsigned s = norm_shift((uint32_t)w);
-    uint32_t inv = zs_recip61((uint32_t)w << s);
-    int64_t nx = mul_floor_shift(xc, inv, 33u - s); /* xc / w in Q28 */
-    int64_t ny = mul_floor_shift(yc, inv, 33u - s);
-    int64_t q = (int64_t)(zs_umul32((uint32_t)r->cam.near_z, inv) >> (31u - s)); /* near / w, Q30 */
-    int64_t zz;
+    unsigned s;
+    uint32_t inv, d;
+    int64_t nx, ny, q, zz;
+    zs_proj p;
+    if (w < ((int32_t)1 << 29) && w >= r->cam.near_z && w <= r->cam.far_z && within7(xc, w) &&
+        within7(yc, w) && zs_proj_init(r, &p)) {
+        zs_vert v;
+        zs_project_fast(&p, (int32_t)xc, (int32_t)yc, w, &v);
+        *x = v.x;
+        *y = v.y;
+        *z = v.z;
+        return;
+    }
+    s = zs_norm_shift((uint32_t)w, &d);
+    inv = zs_recip61(d);
+    nx = mul_floor_shift(xc, inv, 33u - s); /* xc / w in Q28 */
+    ny = mul_floor_shift(yc, inv, 33u - s);
+    q = (int64_t)(zs_umul32((uint32_t)r->cam.near_z, inv) >> (31u - s)); /* near / w, Q30 */
     /* the guard band keeps these within int16 (clamped all the same) */
     *x = (int16_t)zs_clampi(
         (int32_t)(hw + zs_asr64(zs_mul64_small(nx, (int32_t)hw) + ((int64_t)1 << 27), 28)), -32767,

@@ -282,9 +282,10 @@ static ZS_NOINLINE int box_inside(const draw_ctx *c, uint32_t n)
     return 1;
 }
 
-/* The clip rows of a fast draw for project_inside, with the translations
- * and rounding folded into one constant per row (Cortex-M4 and the like:
- * each row is a 64-bit multiply-accumulate chain); 0 where they do not fit. */
+/* The clip rows of a fast draw for project_all, with the translations and
+ * rounding folded into one constant per row (Cortex-M4 and the like: each
+ * row is a 64-bit multiply-accumulate chain); 0 where a clip coordinate
+ * might not fit 32 bits. */
 #ifndef ZS_SPLIT_MUL
 typedef struct inside_rows {
     int64_t k[3]; /* 2^16 clip_t + 2^15 */
@@ -294,7 +295,11 @@ static int inside_rows_init(const draw_ctx *c, inside_rows *ir)
 {
     int k;
     for (k = 0; k < 3; k++) {
-        if (abs64(c->clip_t[k]) >= ((int64_t)1 << 46))
+        /* |clip coordinate| <= sum |m| 2^15 / 2^16 + |t| + 1: below 2^31 for
+         * every int16 position, so it is taken as 32 bits */
+        const int32_t *m = c->clip[k];
+        if (abs64(m[0]) + abs64(m[1]) + abs64(m[2]) + 2 * abs64(c->clip_t[k]) >=
+            ((int64_t)1 << 32) - 4)
             return 0;
         ir->k[k] = c->clip_t[k] * 65536 + 32768;
     }
@@ -303,7 +308,8 @@ static int inside_rows_init(const draw_ctx *c, inside_rows *ir)
 #else
 /* Cortex-M0: each coefficient m split as hi * 2^14 + lo, lo in [0, 2^14),
  * so that a row's three products of each part sum in 32 bits (where the
- * hi parts are small, as for every real mesh), no 64-bit product. */
+ * hi parts are small, as for every real mesh), no 64-bit product; the clip
+ * coordinates then fit 32 bits. */
 typedef struct inside_rows {
     int32_t hi[3][3], lo[3][3], t[3];
 } inside_rows;
@@ -339,18 +345,27 @@ static inline int32_t inside_row(const inside_rows *ir, int k, int32_t px, int32
 }
 #endif
 
-/* The first n vertices of a fast draw that box_inside found inside near,
- * far and the guard band, with far below 2^29: clip coordinates (as
- * fast_clip's, which fit 32 bits here) and projection in one pass. */
-static ZS_NOINLINE void project_inside(const draw_ctx *c, const inside_rows *ir,
-                                       const zs_proj *p, zs_vert *v, uint32_t n)
+/* The first n vertices of a fast draw (far below 2^29, no shade words) into
+ * the pool at v:
+ * clip coordinates (fast_clip's) and, for those inside near, far and the
+ * guard band (zs_outcode's test: then they fit 32 bits), the projection, in
+ * one pass; the rest are marked unprojected. Returns whether all are inside
+ * (what box_inside tells from the bounding box, here from each vertex). */
+static ZS_NOINLINE int project_all(const draw_ctx *c, const inside_rows *ir, const zs_proj *p,
+                                   zs_vert *v, uint32_t n)
 {
+    const zs_renderer *r = c->r;
     const int16_t *pos = c->mesh->positions, *end = pos + 3u * n;
+    const uint32_t near_z = (uint32_t)r->cam.near_z;
+    const uint32_t depth = (uint32_t)r->cam.far_z - near_z;
+    const uint32_t guard = (uint32_t)r->priv.guard;
+    unsigned outside = 0;
 #ifndef ZS_SPLIT_MUL
     const int32_t *m0 = c->clip[0], *m1 = c->clip[1], *m2 = c->clip[2];
 #endif
     for (; pos != end; pos += 3, v++) {
         int32_t px = pos[0], py = pos[1], pz = pos[2], xc, yc, w;
+        uint32_t gw;
 #ifndef ZS_SPLIT_MUL
         xc = (int32_t)zs_asr64(ir->k[0] + (int64_t)m0[0] * px + (int64_t)m0[1] * py +
                                    (int64_t)m0[2] * pz, 16);
@@ -363,13 +378,26 @@ static ZS_NOINLINE void project_inside(const draw_ctx *c, const inside_rows *ir,
         yc = inside_row(ir, 1, px, py, pz);
         w = inside_row(ir, 2, px, py, pz);
 #endif
+        /* near <= w <= far < 2^29, |xc|, |yc| <= guard * w < 2^31, by
+         * differences mod 2^32 */
+        if ((uint32_t)w - near_z > depth)
+            goto out;
+        gw = guard * (uint32_t)w;
+        if ((uint32_t)xc + gw > 2u * gw || (uint32_t)yc + gw > 2u * gw)
+            goto out;
         zs_project_fast(p, xc, yc, w, v);
+        continue;
+    out:
+        v->z = ZS_VERT_UNPROJECTED;
+        outside = 1;
     }
+    return !outside;
 }
 
 /* Vertices base .. base + n - 1 of the pool from the mesh's first n. Out of
  * line (called once a draw), so its locals stay off zs_draw's frame, which
- * lies under the clipper's. */
+ * lies under the clipper's. Returns whether all are inside near, far and the
+ * guard band (then each triangle needs no clip test). */
 static ZS_NOINLINE int transform_vertices(const draw_ctx *c, uint16_t base, uint32_t n)
 {
     zs_renderer *r = c->r;
@@ -377,16 +405,14 @@ static ZS_NOINLINE int transform_vertices(const draw_ctx *c, uint16_t base, uint
     uint32_t i;
     zs_proj p;
     inside_rows ir;
+    unsigned test;
+    /* zs_project_fast suits every vertex within near, far and the guard
+     * band when far is below 2^29 */
+    if (c->fast && !r->priv.vshade && zs_proj_init(r, &p) &&
+        r->cam.far_z < ((int32_t)1 << 29) && inside_rows_init(c, &ir))
+        return project_all(c, &ir, &p, v, n);
     /* a mesh wholly inside needs no outcode per vertex */
-    int inside = box_inside(c, n);
-    unsigned test = inside ? 0u : (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_GUARD);
-    /* every vertex within near, far and the guard band suits
-     * zs_project_fast when far is below 2^29 */
-    int fast = zs_proj_init(r, &p) && r->cam.far_z < ((int32_t)1 << 29);
-    if (inside && fast && !r->priv.vshade && inside_rows_init(c, &ir)) {
-        project_inside(c, &ir, &p, v, n);
-        return 1;
-    }
+    test = box_inside(c, n) ? 0u : (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_GUARD);
     for (i = 0; i < n; i++, v++) {
         int64_t xc, yc, w;
         to_clip(c, i, &xc, &yc, &w);
@@ -394,8 +420,6 @@ static ZS_NOINLINE int transform_vertices(const draw_ctx *c, uint16_t base, uint
             r->priv.vshade[base + i] = vertex_shade(c, i, w);
         if (test && (zs_outcode(r, xc, yc, w) & test))
             v->z = ZS_VERT_UNPROJECTED;
-        else if (fast) /* near <= w <= far, |xc|, |yc| <= guard * w: 32 bits */
-            zs_project_fast(&p, (int32_t)xc, (int32_t)yc, (int32_t)w, v);
         else /* near <= w <= far: 32 bits */
             zs_project(r, xc, yc, (int32_t)w, &v->x, &v->y, &v->z);
     }

@@ -555,6 +555,16 @@ static ZS_NOINLINE void setup_inside(draw_ctx *c, uint16_t base, uint32_t tag_ba
     const zs_vert *pool = r->priv.verts + base;
     const uint16_t *idx = m->indices;
     uint32_t t, n = m->triangle_count, culled = 0;
+    /* face colours from a table or one colour, not lit per face (face_color's
+     * first and last cases): setup.c's loop, each colour a load */
+    if (!(c->lit && !c->vertex_light) && (c->vertex_color || m->face_colors || !m->vertex_colors)) {
+        uint32_t flags = c->tri_flags << 24;
+        if (c->vertex_color)
+            zs_setup_run(r, idx, n, base, 0, WHITE | flags, tag_base);
+        else
+            zs_setup_run(r, idx, n, base, m->face_colors, (m->color & WHITE) | flags, tag_base);
+        return;
+    }
     for (t = 0; t < n; t++, idx += 3) {
         uint32_t i0 = idx[0], i1 = idx[1], i2 = idx[2];
         int64_t area2 = zs_area2_inline(&pool[i0], &pool[i1], &pool[i2]);

@@ -118,70 +118,73 @@ int64_t zs_area2(const zs_vert *a, const zs_vert *b, const zs_vert *c)
     return zs_area2_inline(a, b, c);
 }
 
-static int32_t min3(int32_t a, int32_t b, int32_t c)
-{
-    int32_t m = a < b ? a : b;
-    return m < c ? m : c;
-}
-
-static int32_t max3(int32_t a, int32_t b, int32_t c)
-{
-    int32_t m = a > b ? a : b;
-    return m > c ? m : c;
-}
-
-/* Is the pixel centre (px, py) (28.4) inside, by the top-left rule? The
- * triangle a, b, c has area2 > 0: with y down its edges run clockwise, so a
- * left edge goes up and a top edge goes right. This is the same decision as
- * the rasterizer's ceil(x - 0.5) edges. */
-static int covers(const zs_vert *a, const zs_vert *b, const zs_vert *c, int32_t px, int32_t py)
-{
-    const zs_vert *u[3], *v[3];
-    int k;
-    u[0] = a;
-    v[0] = b;
-    u[1] = b;
-    v[1] = c;
-    u[2] = c;
-    v[2] = a;
-    for (k = 0; k < 3; k++) {
-        /* callers keep every coordinate within 2^12 of the others: 32 bits */
-        int32_t dx = v[k]->x - u[k]->x, dy = v[k]->y - u[k]->y;
-        int32_t w = dx * (py - u[k]->y) - dy * (px - u[k]->x);
-        if (w < 0 || (w == 0 && !(dy < 0 || (dy == 0 && dx > 0))))
-            return 0;
-    }
-    return 1;
-}
-
-/* Small triangles often fall between pixel centres (a fifth to a third of a
- * dense mesh): test the few centres of the bounding box exactly. */
+/* Does the triangle cover a pixel centre of columns col0 .. col1 - 1, rows
+ * row0 .. row1 - 1 (callers keep every coordinate within 2^12 of the others,
+ * and these few centres inside its box)? b and c are taken swapped (then
+ * area2 > 0): with y down the edges run clockwise, so a left edge goes up
+ * and a top edge goes right. Each edge's function at (px, py) is
+ * dx (py - uy) - dy (px - ux) (below 2^29 here); a centre is inside it
+ * where that is positive, or zero on a left or top edge (the top-left rule,
+ * the rasterizer's ceil(x - 0.5) edges): folded into the constant, so the
+ * test is one sign. */
 static int covers_any(const zs_vert *a, const zs_vert *b, const zs_vert *c, int32_t row0,
                       int32_t row1, int32_t col0, int32_t col1)
 {
-    int32_t i, j;
-    for (j = row0; j < row1; j++)
-        for (i = col0; i < col1; i++)
-            if (covers(a, c, b, 16 * i + 8, 16 * j + 8)) /* b, c swapped: area2 > 0 */
+    const zs_vert *u[3], *v[3];
+    int32_t ex[3], ey[3], e0[3], i, j;
+    int k;
+    u[0] = a;
+    v[0] = c;
+    u[1] = c;
+    v[1] = b;
+    u[2] = b;
+    v[2] = a;
+    for (k = 0; k < 3; k++) {
+        int32_t dx = v[k]->x - u[k]->x, dy = v[k]->y - u[k]->y;
+        ex[k] = -dy;
+        ey[k] = dx;
+        e0[k] = dy * u[k]->x - dx * u[k]->y - ((dy < 0 || (dy == 0 && dx > 0)) ? 0 : 1);
+    }
+    for (j = row0; j < row1; j++) {
+        int32_t py = 16 * j + 8;
+        for (i = col0; i < col1; i++) {
+            int32_t px = 16 * i + 8;
+            if (((e0[0] + ey[0] * py + ex[0] * px) | (e0[1] + ey[1] * py + ex[1] * px) |
+                 (e0[2] + ey[2] * py + ex[2] * px)) >= 0)
                 return 1;
+        }
+    }
     return 0;
 }
 
-int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, int64_t area2,
-                      uint32_t color, uint16_t tag)
+/* Culls, bounds and stores one screen triangle (zs_setup_triangle; inline
+ * in zs_setup_run's loop). */
+static ZS_INLINE_ALWAYS int setup_one(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2,
+                                      int64_t area2, uint32_t color, uint16_t tag)
 {
     const zs_vert *pool = r->priv.verts;
     const zs_vert *a = &pool[i0], *b = &pool[i1], *c = &pool[i2];
-    int32_t xmin, xmax, ymin, ymax, row0, row1, col0, col1;
+    int32_t xmin, xmax, ymin, ymax, row0, row1, col0, col1, ax, bx, cx, ay, by, cy;
     zs_tri *t;
     uint16_t *bucket = r->priv.buckets;
     /* counter-clockwise seen from the camera is clockwise with y down */
     if (area2 >= 0)
         return ZS_SETUP_CULLED;
-    xmin = min3(a->x, b->x, c->x);
-    xmax = max3(a->x, b->x, c->x);
-    ymin = min3(a->y, b->y, c->y);
-    ymax = max3(a->y, b->y, c->y);
+    ax = a->x;
+    bx = b->x;
+    cx = c->x;
+    ay = a->y;
+    by = b->y;
+    cy = c->y;
+    /* the box: a sorting network of the three, two compares each way */
+    xmin = ax < bx ? ax : bx;
+    xmax = ax < bx ? bx : ax;
+    xmin = cx < xmin ? cx : xmin;
+    xmax = cx > xmax ? cx : xmax;
+    ymin = ay < by ? ay : by;
+    ymax = ay < by ? by : ay;
+    ymin = cy < ymin ? cy : ymin;
+    ymax = cy > ymax ? cy : ymax;
     if (xmax <= 0 || ymax <= 0 || xmin >= 16 * (int32_t)r->cfg.width ||
         ymin >= 16 * (int32_t)r->cfg.height)
         return ZS_SETUP_REJECTED;
@@ -234,4 +237,37 @@ int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, int
         r->priv.setup_hook(r->priv.setup_hook_user, tag, xy, z);
     }
     return ZS_SETUP_STORED;
+}
+
+int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, int64_t area2,
+                      uint32_t color, uint16_t tag)
+{
+    return setup_one(r, i0, i1, i2, area2, color, tag);
+}
+
+void zs_setup_run(zs_renderer *r, const uint16_t *idx, uint32_t n, uint16_t base,
+                  const zs_color *colors, uint32_t color, uint32_t tag_base)
+{
+    const zs_vert *pool = r->priv.verts + base;
+    uint32_t t, culled = 0, counts[5] = {0, 0, 0, 0, 0};
+    const uint32_t flags = color & 0xFF000000u;
+    for (t = 0; t < n; t++, idx += 3) {
+        uint32_t i0 = idx[0], i1 = idx[1], i2 = idx[2], tag = tag_base + t;
+        int64_t area2 = zs_area2_inline(&pool[i0], &pool[i1], &pool[i2]);
+        if (area2 >= 0) { /* culled before the colour is looked up */
+            culled++;
+            continue;
+        }
+        if (tag >= 65535u) /* tag_base + t < 2 * 65535: the tag wraps once */
+            tag -= 65535u;
+        counts[setup_one(r, (uint16_t)(base + i0), (uint16_t)(base + i1),
+                         (uint16_t)(base + i2), area2,
+                         colors ? (colors[t] & 0xFFFFFFu) | flags : color,
+                         (uint16_t)(tag + 1u))]++;
+    }
+    r->stats.tris_culled += culled + counts[ZS_SETUP_CULLED];
+    r->stats.tris_stored += counts[ZS_SETUP_STORED];
+    r->stats.tris_empty += counts[ZS_SETUP_EMPTY];
+    r->stats.tris_rejected += counts[ZS_SETUP_REJECTED];
+    r->stats.tris_dropped += counts[ZS_SETUP_DROPPED];
 }

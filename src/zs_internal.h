@@ -205,6 +205,13 @@ static inline int32_t zs_first_row(int32_t y)
 int zs_setup_triangle(zs_renderer *r, uint16_t v0, uint16_t v1, uint16_t v2, int64_t area2,
                       uint32_t color,
                       uint16_t tag);
+/* The triangles idx[0 .. 3n - 1] of a draw whose vertices (base + index) are
+ * all projected: culled, bounded and stored as by zs_setup_triangle, and
+ * counted. Triangle t's colour is (colors[t] & 0xFFFFFF) | (color's flags
+ * byte), or color where colors is NULL; its tag (tag_base + t) % 65535 + 1
+ * (tag_base < 65535, n < 65535). */
+void zs_setup_run(zs_renderer *r, const uint16_t *idx, uint32_t n, uint16_t base,
+                  const zs_color *colors, uint32_t color, uint32_t tag_base);
 /* clip.c: clips polygon in[n] against the near/far planes and the guard band;
  * returns the vertex count of out (0..9). out must hold 9; it may be in
  * (in is read only before the first plane that cuts). */

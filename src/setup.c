@@ -188,11 +188,17 @@ static ZS_INLINE_ALWAYS int setup_one(zs_renderer *r, uint16_t i0, uint16_t i1, 
     if (xmax <= 0 || ymax <= 0 || xmin >= 16 * (int32_t)r->cfg.width ||
         ymin >= 16 * (int32_t)r->cfg.height)
         return ZS_SETUP_REJECTED;
-    /* pixel centres covered by the bounding box, within the screen */
-    row0 = zs_clampi(zs_first_row(ymin), 0, r->cfg.height);
-    row1 = zs_clampi(zs_first_row(ymax), 0, r->cfg.height);
-    col0 = zs_clampi(zs_first_row(xmin), 0, r->cfg.width);
-    col1 = zs_clampi(zs_first_row(xmax), 0, r->cfg.width);
+    /* pixel centres covered by the bounding box, within the screen: one
+     * bound each, as ymin < 16 height puts its first row at or above height
+     * and ymax > 0 puts its first row at or below 0 (x likewise) */
+    row0 = zs_first_row(ymin);
+    row0 = row0 < 0 ? 0 : row0;
+    row1 = zs_first_row(ymax);
+    row1 = row1 > (int32_t)r->cfg.height ? (int32_t)r->cfg.height : row1;
+    col0 = zs_first_row(xmin);
+    col0 = col0 < 0 ? 0 : col0;
+    col1 = zs_first_row(xmax);
+    col1 = col1 > (int32_t)r->cfg.width ? (int32_t)r->cfg.width : col1;
     if (row0 >= row1 || col0 >= col1 ||
         ((row1 - row0) * (col1 - col0) <= 4 && xmax - xmin < 4096 && ymax - ymin < 4096 &&
          !covers_any(a, b, c, row0, row1, col0, col1))) {

@@ -118,43 +118,55 @@ int64_t zs_area2(const zs_vert *a, const zs_vert *b, const zs_vert *c)
     return zs_area2_inline(a, b, c);
 }
 
-/* Does the triangle cover a pixel centre of columns col0 .. col1 - 1, rows
- * row0 .. row1 - 1 (callers keep every coordinate within 2^12 of the others,
- * and these few centres inside its box)? b and c are taken swapped (then
- * area2 > 0): with y down the edges run clockwise, so a left edge goes up
- * and a top edge goes right. Each edge's function at (px, py) is
- * dx (py - uy) - dy (px - ux) (below 2^29 here); a centre is inside it
- * where that is positive, or zero on a left or top edge (the top-left rule,
- * the rasterizer's ceil(x - 0.5) edges): folded into the constant, so the
- * test is one sign. */
-static int covers_any(const zs_vert *a, const zs_vert *b, const zs_vert *c, int32_t row0,
-                      int32_t row1, int32_t col0, int32_t col1)
+/* Edge u -> v's function at the centre (px, py), dx (py - uy) - dy (px - ux),
+ * less one unless the edge is a left or top one: then a centre is covered by
+ * the top-left rule (inside, or on a left or top edge: the rasterizer's
+ * ceil(x - 0.5) edges) exactly where it is >= 0. The edge is a left or top
+ * one where dy < 0, or dy = 0 and dx > 0: where dy 2^13 - dx < 0, for
+ * |dx|, |dy| < 2^12. */
+static int32_t edge_at(int32_t ux, int32_t uy, int32_t dx, int32_t dy, int32_t px, int32_t py)
 {
-    const zs_vert *u[3], *v[3];
-    int32_t ex[3], ey[3], e0[3], i, j;
-    int k;
-    u[0] = a;
-    v[0] = c;
-    u[1] = c;
-    v[1] = b;
-    u[2] = b;
-    v[2] = a;
-    for (k = 0; k < 3; k++) {
-        int32_t dx = v[k]->x - u[k]->x, dy = v[k]->y - u[k]->y;
-        ex[k] = -dy;
-        ey[k] = dx;
-        e0[k] = dy * u[k]->x - dx * u[k]->y - ((dy < 0 || (dy == 0 && dx > 0)) ? 0 : 1);
-    }
+    return dx * (py - uy) - dy * (px - ux) + ~zs_asr32(dy * 8192 - dx, 31);
+}
+
+static int32_t span3(int32_t a, int32_t b, int32_t c)
+{
+    int32_t lo = a < b ? a : b, hi = a < b ? b : a;
+    return (c > hi ? c : hi) - (c < lo ? c : lo);
+}
+
+/* Does the triangle a, b, c (area2 < 0), every coordinate within 2^12 of
+ * the others, miss every pixel centre of columns col0 .. col1 - 1, rows
+ * row0 .. row1 - 1 (a few centres inside its box)? (0 for a wider one: it
+ * is not tested.) Taken as a, c, b (then the area is positive: with y down
+ * the edges run clockwise, so a left edge goes up and a top edge goes
+ * right); each edge function is stepped from the first centre (below 2^26
+ * here). */
+static ZS_NOINLINE int misses_centres(const zs_vert *a, const zs_vert *b, const zs_vert *c,
+                                      int32_t row0, int32_t row1, int32_t col0, int32_t col1)
+{
+    int32_t ax = a->x, ay = a->y, bx = b->x, by = b->y, cx = c->x, cy = c->y;
+    int32_t px = 16 * col0 + 8, py = 16 * row0 + 8, i, j;
+    if (span3(ax, bx, cx) >= 4096 || span3(ay, by, cy) >= 4096)
+        return 0;
+    int32_t d0x = cx - ax, d0y = cy - ay, d1x = bx - cx, d1y = by - cy, d2x = ax - bx,
+            d2y = ay - by;
+    int32_t e0 = edge_at(ax, ay, d0x, d0y, px, py), e1 = edge_at(cx, cy, d1x, d1y, px, py),
+            e2 = edge_at(bx, by, d2x, d2y, px, py);
     for (j = row0; j < row1; j++) {
-        int32_t py = 16 * j + 8;
+        int32_t f0 = e0, f1 = e1, f2 = e2;
         for (i = col0; i < col1; i++) {
-            int32_t px = 16 * i + 8;
-            if (((e0[0] + ey[0] * py + ex[0] * px) | (e0[1] + ey[1] * py + ex[1] * px) |
-                 (e0[2] + ey[2] * py + ex[2] * px)) >= 0)
-                return 1;
+            if ((f0 | f1 | f2) >= 0)
+                return 0;
+            f0 -= 16 * d0y;
+            f1 -= 16 * d1y;
+            f2 -= 16 * d2y;
         }
+        e0 += 16 * d0x;
+        e1 += 16 * d1x;
+        e2 += 16 * d2x;
     }
-    return 0;
+    return 1;
 }
 
 /* Culls, bounds and stores one screen triangle (zs_setup_triangle; inline
@@ -200,8 +212,7 @@ static ZS_INLINE_ALWAYS int setup_one(zs_renderer *r, uint16_t i0, uint16_t i1, 
     col1 = zs_first_row(xmax);
     col1 = col1 > (int32_t)r->cfg.width ? (int32_t)r->cfg.width : col1;
     if (row0 >= row1 || col0 >= col1 ||
-        ((row1 - row0) * (col1 - col0) <= 4 && xmax - xmin < 4096 && ymax - ymin < 4096 &&
-         !covers_any(a, b, c, row0, row1, col0, col1))) {
+        ((row1 - row0) * (col1 - col0) <= 4 && misses_centres(a, b, c, row0, row1, col0, col1))) {
         if (r->priv.aa_mode)
             return zs_abuffer_store(r, i0, i1, i2, color, tag);
 #ifndef ZS_NO_MONO
@@ -251,12 +262,95 @@ int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, int
     return setup_one(r, i0, i1, i2, area2, color, tag);
 }
 
+/* zs_setup_run's loop for the plain frame (no A-buffer, hidden lines, setup
+ * hook or tag format): setup_one's decisions, the pools' state in locals. */
+static void setup_run_plain(zs_renderer *r, const uint16_t *idx, uint32_t n, uint16_t base,
+                            const zs_color *colors, uint32_t color)
+{
+    const zs_vert *pool = r->priv.verts;
+    zs_tri *tris = r->priv.tris;
+    uint16_t *bucket = r->priv.buckets;
+    uint32_t nt = r->priv.n_tris, t, culled = 0, rejected = 0, empty = 0, dropped = 0;
+    const uint32_t cap = r->cfg.max_triangles, flags = color & 0xFF000000u;
+    const int32_t width = r->cfg.width, height = r->cfg.height;
+    const uint32_t first = nt;
+    for (t = 0; t < n; t++, idx += 3) {
+        uint32_t i0 = base + idx[0], i1 = base + idx[1], i2 = base + idx[2];
+        const zs_vert *a = &pool[i0], *b = &pool[i1], *c = &pool[i2];
+        int32_t ax, bx, cx, ay, by, cy, xmin, xmax, ymin, ymax, row0, row1, col0, col1;
+        zs_tri *rec;
+        if (zs_area2_inline(a, b, c) >= 0) { /* a back face */
+            culled++;
+            continue;
+        }
+        ax = a->x;
+        bx = b->x;
+        cx = c->x;
+        ay = a->y;
+        by = b->y;
+        cy = c->y;
+        xmin = ax < bx ? ax : bx;
+        xmax = ax < bx ? bx : ax;
+        xmin = cx < xmin ? cx : xmin;
+        xmax = cx > xmax ? cx : xmax;
+        ymin = ay < by ? ay : by;
+        ymax = ay < by ? by : ay;
+        ymin = cy < ymin ? cy : ymin;
+        ymax = cy > ymax ? cy : ymax;
+        if (xmax <= 0 || ymax <= 0 || xmin >= 16 * width || ymin >= 16 * height) {
+            rejected++;
+            continue;
+        }
+        row0 = zs_first_row(ymin);
+        row0 = row0 < 0 ? 0 : row0;
+        row1 = zs_first_row(ymax);
+        row1 = row1 > height ? height : row1;
+        col0 = zs_first_row(xmin);
+        col0 = col0 < 0 ? 0 : col0;
+        col1 = zs_first_row(xmax);
+        col1 = col1 > width ? width : col1;
+        if (row0 >= row1 || col0 >= col1 ||
+            ((row1 - row0) * (col1 - col0) <= 4 && misses_centres(a, b, c, row0, row1, col0, col1))) {
+            empty++;
+            continue;
+        }
+        if (nt >= cap) {
+            dropped++;
+            continue;
+        }
+        rec = &tris[nt];
+        rec->v[0] = (uint16_t)i0;
+        rec->v[1] = (uint16_t)i1;
+        rec->v[2] = (uint16_t)i2;
+        rec->color = colors ? (colors[t] & 0xFFFFFFu) | flags : color;
+        rec->next = bucket[row0];
+        bucket[row0] = (uint16_t)nt;
+        nt++;
+    }
+    r->priv.n_tris = (uint16_t)nt;
+    r->stats.records += nt - first;
+    r->stats.tris_stored += nt - first;
+    r->stats.tris_culled += culled;
+    r->stats.tris_rejected += rejected;
+    r->stats.tris_empty += empty;
+    r->stats.tris_dropped += dropped;
+}
+
 void zs_setup_run(zs_renderer *r, const uint16_t *idx, uint32_t n, uint16_t base,
                   const zs_color *colors, uint32_t color, uint32_t tag_base)
 {
     const zs_vert *pool = r->priv.verts + base;
     uint32_t t, culled = 0, counts[5] = {0, 0, 0, 0, 0};
     const uint32_t flags = color & 0xFF000000u;
+#ifndef ZS_NO_MONO
+    const int lines = r->priv.line_keep;
+#else
+    const int lines = 0;
+#endif
+    if (!r->priv.aa_mode && !lines && !r->priv.setup_hook && r->shade.format != ZS_FMT_ID16) {
+        setup_run_plain(r, idx, n, base, colors, color);
+        return;
+    }
     for (t = 0; t < n; t++, idx += 3) {
         uint32_t i0 = idx[0], i1 = idx[1], i2 = idx[2], tag = tag_base + t;
         int64_t area2 = zs_area2_inline(&pool[i0], &pool[i1], &pool[i2]);

@@ -65,7 +65,7 @@ void zs_project(const zs_renderer *r, int64_t xc, int64_t yc, int32_t w, int16_t
     if (w < ((int32_t)1 << 29) && w >= r->cam.near_z && w <= r->cam.far_z && within7(xc, w) &&
         within7(yc, w) && zs_proj_init(r, &p)) {
         zs_vert v;
-        zs_project_fast(&p, (int32_t)xc, (int32_t)yc, w, &v);
+        zs_project_fast(&p, (int32_t)xc, (int32_t)yc, w, &v, 0);
         *x = v.x;
         *y = v.y;
         *z = v.z;

@@ -528,9 +528,13 @@ static inline int32_t zs_s32(uint32_t u)
 /* zs_project (setup.c), the same results, for a vertex with near <= w <= far,
  * w < 2^29 and |xc|, |yc| <= 7 w (inside the guard band, or off it by a
  * clipper's rounding), when depth_scale is not 0: then xc / w in Q28 fits 32
- * bits, and so do the depth's words. */
+ * bits, and so do the depth's words. With inside set the vertex is within
+ * the guard band, |xc|, |yc| <= guard * w: then x and y need no clamp, as
+ * xc * inv / 2^(33 - s) <= guard * 2^28 (inv <= 2^61 / (w 2^s)) puts x
+ * within hw +- guard * hw, inside +-(guard + 1) 8 width <= 32767 (the
+ * guard's definition, renderer.c), and y likewise. */
 static inline void zs_project_fast(const zs_proj *p, int32_t xc, int32_t yc, int32_t w,
-                                   zs_vert *v)
+                                   zs_vert *v, int inside)
 {
     uint32_t d, inv, q, m, zz;
     unsigned s = zs_norm_shift((uint32_t)w, &d); /* 2..30 */
@@ -550,8 +554,12 @@ static inline void zs_project_fast(const zs_proj *p, int32_t xc, int32_t yc, int
     zz = zs_shr64_lo(dz, 30); /* under 2^30 + 16 for w <= far */
     x = (int32_t)zs_asr64(p->xk + zs_mul_32x16(nx, p->hw), 28);
     y = (int32_t)zs_asr64(p->yk + zs_mul_32x16(ny, p->nhh), 28);
-    v->x = (int16_t)zs_clampi(x, -32767, 32767);
-    v->y = (int16_t)zs_clampi(y, -32767, 32767);
+    if (!inside) {
+        x = zs_clampi(x, -32767, 32767);
+        y = zs_clampi(y, -32767, 32767);
+    }
+    v->x = (int16_t)x;
+    v->y = (int16_t)y;
     v->z = zz > 0x40000000u ? 0x40000000u : zz;
 }
 

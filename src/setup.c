@@ -39,7 +39,7 @@ static int64_t mul_floor_shift(int64_t v, uint32_t inv, unsigned sh)
     return -(int64_t)((mag_mul((uint64_t)0 - (uint64_t)v, inv) + (((uint64_t)1 << sh) - 1u)) >> sh);
 }
 
-/* |v| <= 7 w, for w < 2^29 (so 8 w fits 32 bits) and v fitting 32 bits. */
+/* |v| <= 7 w (for w < 2^28: then v fits 32 bits). */
 static int within7(int64_t v, int32_t w)
 {
     return v >= -7 * (int64_t)w && v <= 7 * (int64_t)w;
@@ -51,7 +51,7 @@ static int within7(int64_t v, int32_t w)
  * Inside the guard band |xc|, |yc| <= guard * w, so xc / w fits Q28 easily.
  * Window depth z = far (w - near) / ((far - near) w) = A (1 - near / w) with
  * A = far / (far - near) precomputed per frame (depth_scale, Q30). The
- * common case, w below 2^29 (8192 units), in 32-bit words (zs_project_fast);
+ * common case, w below 2^28 (4096 units), in 32-bit words (zs_project_fast);
  * far vertices and near close to far here. */
 void zs_project(const zs_renderer *r, int64_t xc, int64_t yc, int32_t w, int16_t *x,
                 int16_t *y, uint32_t *z)
@@ -62,7 +62,7 @@ void zs_project(const zs_renderer *r, int64_t xc, int64_t yc, int32_t w, int16_t
     uint32_t inv, d;
     int64_t nx, ny, q, zz;
     zs_proj p;
-    if (w < ((int32_t)1 << 29) && w >= r->cam.near_z && w <= r->cam.far_z && within7(xc, w) &&
+    if (w < ((int32_t)1 << 28) && w >= r->cam.near_z && w <= r->cam.far_z && within7(xc, w) &&
         within7(yc, w) && zs_proj_init(r, &p)) {
         zs_vert v;
         zs_project_fast(&p, (int32_t)xc, (int32_t)yc, w, &v, 0);

@@ -385,7 +385,7 @@ static ZS_NOINLINE int project_all(const draw_ctx *c, const inside_rows *ir, con
         gw = guard * (uint32_t)w;
         if ((uint32_t)xc + gw > 2u * gw || (uint32_t)yc + gw > 2u * gw)
             goto out;
-        zs_project_fast(p, xc, yc, w, v, 1);
+        ZS_PROJECT_FAST(p, xc, yc, w, v, 1);
         continue;
     out:
         v->z = ZS_VERT_UNPROJECTED;

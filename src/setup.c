@@ -39,6 +39,14 @@ static int64_t mul_floor_shift(int64_t v, uint32_t inv, unsigned sh)
     return -(int64_t)((mag_mul((uint64_t)0 - (uint64_t)v, inv) + (((uint64_t)1 << sh) - 1u)) >> sh);
 }
 
+#if defined(__OPTIMIZE_SIZE__)
+void zs_project_fast_out(const zs_proj *p, int32_t xc, int32_t yc, int32_t w, zs_vert *v,
+                         int inside)
+{
+    zs_project_fast(p, xc, yc, w, v, inside);
+}
+#endif
+
 /* |v| <= 7 w (for w < 2^28: then v fits 32 bits). */
 static int within7(int64_t v, int32_t w)
 {
@@ -65,7 +73,7 @@ void zs_project(const zs_renderer *r, int64_t xc, int64_t yc, int32_t w, int16_t
     if (w < ((int32_t)1 << 28) && w >= r->cam.near_z && w <= r->cam.far_z && within7(xc, w) &&
         within7(yc, w) && zs_proj_init(r, &p)) {
         zs_vert v;
-        zs_project_fast(&p, (int32_t)xc, (int32_t)yc, w, &v, 0);
+        ZS_PROJECT_FAST(&p, (int32_t)xc, (int32_t)yc, w, &v, 0);
         *x = v.x;
         *y = v.y;
         *z = v.z;
@@ -169,10 +177,8 @@ static ZS_NOINLINE int misses_centres(const zs_vert *a, const zs_vert *b, const 
     return 1;
 }
 
-/* Culls, bounds and stores one screen triangle (zs_setup_triangle; inline
- * in zs_setup_run's loop). */
-static ZS_INLINE_ALWAYS int setup_one(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2,
-                                      int64_t area2, uint32_t color, uint16_t tag)
+int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, int64_t area2,
+                      uint32_t color, uint16_t tag)
 {
     const zs_vert *pool = r->priv.verts;
     const zs_vert *a = &pool[i0], *b = &pool[i1], *c = &pool[i2];
@@ -256,16 +262,11 @@ static ZS_INLINE_ALWAYS int setup_one(zs_renderer *r, uint16_t i0, uint16_t i1, 
     return ZS_SETUP_STORED;
 }
 
-int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, int64_t area2,
-                      uint32_t color, uint16_t tag)
-{
-    return setup_one(r, i0, i1, i2, area2, color, tag);
-}
-
 /* zs_setup_run's loop for the plain frame (no A-buffer, hidden lines, setup
- * hook or tag format): setup_one's decisions, the pools' state in locals. */
-static void setup_run_plain(zs_renderer *r, const uint16_t *idx, uint32_t n, uint16_t base,
-                            const zs_color *colors, uint32_t color)
+ * hook or tag format): zs_setup_triangle's decisions, the pools' state in
+ * locals. */
+static ZS_NOINLINE void setup_run_plain(zs_renderer *r, const uint16_t *idx, uint32_t n,
+                                        uint16_t base, const zs_color *colors, uint32_t color)
 {
     const zs_vert *pool = r->priv.verts;
     zs_tri *tris = r->priv.tris;
@@ -360,10 +361,10 @@ void zs_setup_run(zs_renderer *r, const uint16_t *idx, uint32_t n, uint16_t base
         }
         if (tag >= 65535u) /* tag_base + t < 2 * 65535: the tag wraps once */
             tag -= 65535u;
-        counts[setup_one(r, (uint16_t)(base + i0), (uint16_t)(base + i1),
-                         (uint16_t)(base + i2), area2,
-                         colors ? (colors[t] & 0xFFFFFFu) | flags : color,
-                         (uint16_t)(tag + 1u))]++;
+        counts[zs_setup_triangle(r, (uint16_t)(base + i0), (uint16_t)(base + i1),
+                                 (uint16_t)(base + i2), area2,
+                                 colors ? (colors[t] & 0xFFFFFFu) | flags : color,
+                                 (uint16_t)(tag + 1u))]++;
     }
     r->stats.tris_culled += culled + counts[ZS_SETUP_CULLED];
     r->stats.tris_stored += counts[ZS_SETUP_STORED];

@@ -563,6 +563,16 @@ static inline void zs_project_fast(const zs_proj *p, int32_t xc, int32_t yc, int
     v->z = zz > 0x40000000u ? 0x40000000u : zz;
 }
 
+/* Built for size, one copy out of line (setup.c) serves zs_project and the
+ * draw loop; else inline in each. */
+#if defined(__OPTIMIZE_SIZE__)
+void zs_project_fast_out(const zs_proj *p, int32_t xc, int32_t yc, int32_t w, zs_vert *v,
+                         int inside);
+#define ZS_PROJECT_FAST zs_project_fast_out
+#else
+#define ZS_PROJECT_FAST zs_project_fast
+#endif
+
 /* ---- span fills (inline: they run once per span) ---- */
 #if defined(__GNUC__)
 /* Word stores into the caller's byte buffer; may_alias keeps them legal. */

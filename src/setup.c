@@ -150,12 +150,17 @@ static int32_t span3(int32_t a, int32_t b, int32_t c)
  * the edges run clockwise, so a left edge goes up and a top edge goes
  * right); each edge function is stepped from the first centre (below 2^26
  * here). */
-static ZS_NOINLINE int misses_centres(const zs_vert *a, const zs_vert *b, const zs_vert *c,
-                                      int32_t row0, int32_t row1, int32_t col0, int32_t col1)
+static ZS_NOINLINE int misses_centres(const zs_renderer *r, const zs_vert *a, const zs_vert *b,
+                                      const zs_vert *c, int32_t row0, int32_t row1,
+                                      int32_t col0, int32_t col1)
 {
     int32_t ax = a->x, ay = a->y, bx = b->x, by = b->y, cx = c->x, cy = c->y;
     int32_t px = 16 * col0 + 8, py = 16 * row0 + 8, i, j;
-    if (span3(ax, bx, cx) >= 4096 || span3(ay, by, cy) >= 4096)
+    /* a box the screen did not cut spans under 16 (rows + 1) in y (x
+     * likewise): within 2^12 */
+    if ((row0 == 0 || row1 == (int32_t)r->cfg.height || col0 == 0 ||
+         col1 == (int32_t)r->cfg.width) &&
+        (span3(ax, bx, cx) >= 4096 || span3(ay, by, cy) >= 4096))
         return 0;
     int32_t d0x = cx - ax, d0y = cy - ay, d1x = bx - cx, d1y = by - cy, d2x = ax - bx,
             d2y = ay - by;
@@ -218,7 +223,7 @@ int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, int
     col1 = zs_first_row(xmax);
     col1 = col1 > (int32_t)r->cfg.width ? (int32_t)r->cfg.width : col1;
     if (row0 >= row1 || col0 >= col1 ||
-        ((row1 - row0) * (col1 - col0) <= 4 && misses_centres(a, b, c, row0, row1, col0, col1))) {
+        ((row1 - row0) * (col1 - col0) <= 4 && misses_centres(r, a, b, c, row0, row1, col0, col1))) {
         if (r->priv.aa_mode)
             return zs_abuffer_store(r, i0, i1, i2, color, tag);
 #ifndef ZS_NO_MONO
@@ -311,7 +316,7 @@ static ZS_NOINLINE void setup_run_plain(zs_renderer *r, const uint16_t *idx, uin
         col1 = zs_first_row(xmax);
         col1 = col1 > width ? width : col1;
         if (row0 >= row1 || col0 >= col1 ||
-            ((row1 - row0) * (col1 - col0) <= 4 && misses_centres(a, b, c, row0, row1, col0, col1))) {
+            ((row1 - row0) * (col1 - col0) <= 4 && misses_centres(r, a, b, c, row0, row1, col0, col1))) {
             empty++;
             continue;
         }

@@ -267,6 +267,20 @@ int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, int
     return ZS_SETUP_STORED;
 }
 
+/* Is a, b, c a back face (zs_area2 >= 0)? On Cortex-M0 the area's two
+ * products in 32 bits when every difference is below 2^14 (as in every small
+ * triangle: each product below 2^28), not the split 64-bit ones. */
+static inline int back_face(const zs_vert *a, const zs_vert *b, const zs_vert *c)
+{
+#ifdef ZS_SPLIT_MUL
+    int32_t ux = b->x - a->x, uy = b->y - a->y, vx = c->x - a->x, vy = c->y - a->y;
+    if ((((uint32_t)ux + 16384u) | ((uint32_t)uy + 16384u) | ((uint32_t)vx + 16384u) |
+         ((uint32_t)vy + 16384u)) < 32768u)
+        return ux * vy - vx * uy >= 0;
+#endif
+    return zs_area2_inline(a, b, c) >= 0;
+}
+
 /* zs_setup_run's loop for the plain frame (no A-buffer, hidden lines, setup
  * hook or tag format): zs_setup_triangle's decisions, the pools' state in
  * locals. */
@@ -285,7 +299,7 @@ static ZS_NOINLINE void setup_run_plain(zs_renderer *r, const uint16_t *idx, uin
         const zs_vert *a = &pool[i0], *b = &pool[i1], *c = &pool[i2];
         int32_t ax, bx, cx, ay, by, cy, xmin, xmax, ymin, ymax, row0, row1, col0, col1;
         zs_tri *rec;
-        if (zs_area2_inline(a, b, c) >= 0) { /* a back face */
+        if (back_face(a, b, c)) {
             culled++;
             continue;
         }

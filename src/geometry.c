@@ -597,12 +597,51 @@ static ZS_NOINLINE void setup_inside(draw_ctx *c, uint16_t base, uint32_t tag_ba
  * branch per index. */
 static ZS_NOINLINE int indices_valid(const uint16_t *idx, uint32_t tris, uint32_t vcount)
 {
-    const uint16_t *const end = idx + 3u * tris;
+    const uint16_t *end = idx + 3u * tris;
     const uint32_t last = vcount - 1u;
-    uint32_t bad = 0;
+    uint32_t bad = 0, acc = 0;
+#if defined(__ARM_FEATURE_SIMD32) && defined(ZS_WORD_STORES)
+    /* Cortex-M4: two indices a word, both against last at once (usub16 sets
+     * a lane's GE flag where index <= last, sel keeps bad's lane there and
+     * takes all ones elsewhere) */
+    if (((uintptr_t)idx & 2u) && idx != end)
+        bad |= last - *idx++; /* to a word boundary */
+    if (end - idx >= 2) {
+        const zs_word_alias *w = (const zs_word_alias *)(const void *)idx;
+        const zs_word_alias *wend = w + (end - idx) / 2;
+        const uint32_t lim = last * 0x10001u, ones = 0xFFFFFFFFu; /* last <= 65534 */
+        if ((wend - w) & 1) { /* then pairs of words */
+            uint32_t t;
+            __asm__(".syntax unified\n"
+                    "    usub16 %1, %2, %3\n"
+                    "    sel %0, %0, %4\n"
+                    : "+r"(acc), "=&r"(t)
+                    : "r"(lim), "r"(*w++), "r"(ones)
+                    : "cc");
+        }
+        if (w != wend) {
+            uint32_t t, a, b;
+            __asm__(".syntax unified\n"
+                    "1:  ldrd %[a], %[b], [%[w]], #8\n"
+                    "    usub16 %[t], %[lim], %[a]\n"
+                    "    sel %[acc], %[acc], %[ones]\n"
+                    "    usub16 %[t], %[lim], %[b]\n"
+                    "    sel %[acc], %[acc], %[ones]\n"
+                    "    cmp %[w], %[end]\n"
+                    "    bne 1b\n"
+                    : [w] "+r"(w), [acc] "+r"(acc), [t] "=&r"(t), [a] "=&r"(a), [b] "=&r"(b)
+                    : [end] "r"(wend), [lim] "r"(lim), [ones] "r"(ones)
+                    : "cc", "memory");
+        }
+        idx = (const uint16_t *)(const void *)wend;
+    }
+    for (; idx != end; idx++)
+        bad |= last - *idx;
+#else
     for (; idx != end; idx += 3)
         bad |= (last - idx[0]) | (last - idx[1]) | (last - idx[2]);
-    return (bad >> 31) == 0;
+#endif
+    return (bad >> 31) == 0 && acc == 0;
 }
 
 zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)

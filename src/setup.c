@@ -281,28 +281,56 @@ static inline int back_face(const zs_vert *a, const zs_vert *b, const zs_vert *c
     return zs_area2_inline(a, b, c) >= 0;
 }
 
+#if defined(__ARM_FEATURE_SIMD32) && defined(ZS_WORD_STORES)
+#define SIMD_AREA 1
+/* Twice the area of a, b, c, for differences within int16: each vertex's x,
+ * y as one word (x the low half), both differences at once (ssub16), and
+ * ux vy - uy vx by one dual multiply (smusdx: each product below 2^30). */
+static inline int32_t area2_simd(const zs_vert *a, const zs_vert *b, const zs_vert *c)
+{
+    uint32_t pa = *(const zs_word_alias *)(const void *)a;
+    uint32_t pb = *(const zs_word_alias *)(const void *)b;
+    uint32_t pc = *(const zs_word_alias *)(const void *)c, u, v;
+    int32_t s;
+    __asm__(".syntax unified\n"
+            "    ssub16 %1, %4, %3\n"
+            "    ssub16 %2, %5, %3\n"
+            "    smusdx %0, %1, %2\n"
+            : "=r"(s), "=&r"(u), "=&r"(v)
+            : "r"(pa), "r"(pb), "r"(pc));
+    return s;
+}
+#endif
+
 /* zs_setup_run's loop for the plain frame (no A-buffer, hidden lines, setup
  * hook or tag format): zs_setup_triangle's decisions, the pools' state in
  * locals. */
 static ZS_NOINLINE void setup_run_plain(zs_renderer *r, const uint16_t *idx, uint32_t n,
                                         uint16_t base, const zs_color *colors, uint32_t color)
 {
-    const zs_vert *pool = r->priv.verts;
+    const zs_vert *pool = r->priv.verts + base;
     zs_tri *tris = r->priv.tris;
     uint16_t *bucket = r->priv.buckets;
-    uint32_t nt = r->priv.n_tris, t, culled = 0, rejected = 0, empty = 0, dropped = 0;
+    uint32_t nt = r->priv.n_tris, t, rejected = 0, empty = 0, dropped = 0;
     const uint32_t cap = r->cfg.max_triangles, flags = color & 0xFF000000u;
     const int32_t width = r->cfg.width, height = r->cfg.height;
     const uint32_t first = nt;
+#ifdef SIMD_AREA
+    /* every vertex of the draw is inside the guard band: x within
+     * (1 -+ guard) 8 width, so differences within 16 guard width (y
+     * likewise), which fit int16 where guard * max(width, height) < 2048 */
+    const int simd = r->priv.guard * (width > height ? width : height) < 2048;
+#endif
     for (t = 0; t < n; t++, idx += 3) {
-        uint32_t i0 = base + idx[0], i1 = base + idx[1], i2 = base + idx[2];
-        const zs_vert *a = &pool[i0], *b = &pool[i1], *c = &pool[i2];
+        const zs_vert *a = &pool[idx[0]], *b = &pool[idx[1]], *c = &pool[idx[2]];
         int32_t ax, bx, cx, ay, by, cy, xmin, xmax, ymin, ymax, row0, row1, col0, col1;
         zs_tri *rec;
-        if (back_face(a, b, c)) {
-            culled++;
-            continue;
-        }
+#ifdef SIMD_AREA
+        if (simd ? area2_simd(a, b, c) >= 0 : back_face(a, b, c))
+#else
+        if (back_face(a, b, c))
+#endif
+            continue; /* culled: counted at the end */
         ax = a->x;
         bx = b->x;
         cx = c->x;
@@ -339,9 +367,9 @@ static ZS_NOINLINE void setup_run_plain(zs_renderer *r, const uint16_t *idx, uin
             continue;
         }
         rec = &tris[nt];
-        rec->v[0] = (uint16_t)i0;
-        rec->v[1] = (uint16_t)i1;
-        rec->v[2] = (uint16_t)i2;
+        rec->v[0] = (uint16_t)(base + idx[0]);
+        rec->v[1] = (uint16_t)(base + idx[1]);
+        rec->v[2] = (uint16_t)(base + idx[2]);
         rec->color = colors ? (colors[t] & 0xFFFFFFu) | flags : color;
         rec->next = bucket[row0];
         bucket[row0] = (uint16_t)nt;
@@ -350,7 +378,7 @@ static ZS_NOINLINE void setup_run_plain(zs_renderer *r, const uint16_t *idx, uin
     r->priv.n_tris = (uint16_t)nt;
     r->stats.records += nt - first;
     r->stats.tris_stored += nt - first;
-    r->stats.tris_culled += culled;
+    r->stats.tris_culled += n - (nt - first) - rejected - empty - dropped;
     r->stats.tris_rejected += rejected;
     r->stats.tris_empty += empty;
     r->stats.tris_dropped += dropped;

@@ -286,11 +286,9 @@ static inline int back_face(const zs_vert *a, const zs_vert *b, const zs_vert *c
 /* Twice the area of a, b, c, for differences within int16: each vertex's x,
  * y as one word (x the low half), both differences at once (ssub16), and
  * ux vy - uy vx by one dual multiply (smusdx: each product below 2^30). */
-static inline int32_t area2_simd(const zs_vert *a, const zs_vert *b, const zs_vert *c)
+static inline int32_t area2_simd(uint32_t pa, uint32_t pb, uint32_t pc)
 {
-    uint32_t pa = *(const zs_word_alias *)(const void *)a;
-    uint32_t pb = *(const zs_word_alias *)(const void *)b;
-    uint32_t pc = *(const zs_word_alias *)(const void *)c, u, v;
+    uint32_t u, v;
     int32_t s;
     __asm__(".syntax unified\n"
             "    ssub16 %1, %4, %3\n"
@@ -299,6 +297,31 @@ static inline int32_t area2_simd(const zs_vert *a, const zs_vert *b, const zs_ve
             : "=r"(s), "=&r"(u), "=&r"(v)
             : "r"(pa), "r"(pb), "r"(pc));
     return s;
+}
+
+/* The least and greatest x and y of three such words, both halves at once:
+ * ssub16 sets each half's GE flag where the first is at least the second
+ * (by the exact difference), sel takes each half by its flag. */
+static inline void box_simd(uint32_t pa, uint32_t pb, uint32_t pc, uint32_t *lo, uint32_t *hi)
+{
+    uint32_t t, mn, mx;
+    __asm__(".syntax unified\n"
+            "    ssub16 %2, %3, %4\n"
+            "    sel %0, %4, %3\n"
+            "    sel %1, %3, %4\n"
+            "    ssub16 %2, %0, %5\n"
+            "    sel %0, %5, %0\n"
+            "    ssub16 %2, %5, %1\n"
+            "    sel %1, %5, %1\n"
+            : "=&r"(mn), "=&r"(mx), "=&r"(t)
+            : "r"(pa), "r"(pb), "r"(pc));
+    *lo = mn;
+    *hi = mx;
+}
+
+static inline uint32_t vert_word(const zs_vert *v)
+{
+    return *(const zs_word_alias *)(const void *)v;
 }
 #endif
 
@@ -323,28 +346,39 @@ static ZS_NOINLINE void setup_run_plain(zs_renderer *r, const uint16_t *idx, uin
 #endif
     for (t = 0; t < n; t++, idx += 3) {
         const zs_vert *a = &pool[idx[0]], *b = &pool[idx[1]], *c = &pool[idx[2]];
-        int32_t ax, bx, cx, ay, by, cy, xmin, xmax, ymin, ymax, row0, row1, col0, col1;
+        int32_t xmin, xmax, ymin, ymax, row0, row1, col0, col1;
         zs_tri *rec;
 #ifdef SIMD_AREA
-        if (simd ? area2_simd(a, b, c) >= 0 : back_face(a, b, c))
-#else
-        if (back_face(a, b, c))
+        if (simd) {
+            uint32_t pa = vert_word(a), pb = vert_word(b), pc = vert_word(c), lo, hi;
+            if (area2_simd(pa, pb, pc) >= 0)
+                continue; /* culled: counted at the end */
+            box_simd(pa, pb, pc, &lo, &hi);
+            xmin = zs_asr32(zs_s32(lo << 16), 16);
+            ymin = zs_asr32(zs_s32(lo), 16);
+            xmax = zs_asr32(zs_s32(hi << 16), 16);
+            ymax = zs_asr32(zs_s32(hi), 16);
+        } else
 #endif
-            continue; /* culled: counted at the end */
-        ax = a->x;
-        bx = b->x;
-        cx = c->x;
-        ay = a->y;
-        by = b->y;
-        cy = c->y;
-        xmin = ax < bx ? ax : bx;
-        xmax = ax < bx ? bx : ax;
-        xmin = cx < xmin ? cx : xmin;
-        xmax = cx > xmax ? cx : xmax;
-        ymin = ay < by ? ay : by;
-        ymax = ay < by ? by : ay;
-        ymin = cy < ymin ? cy : ymin;
-        ymax = cy > ymax ? cy : ymax;
+        {
+            int32_t ax, bx, cx, ay, by, cy;
+            if (back_face(a, b, c))
+                continue; /* culled: counted at the end */
+            ax = a->x;
+            bx = b->x;
+            cx = c->x;
+            ay = a->y;
+            by = b->y;
+            cy = c->y;
+            xmin = ax < bx ? ax : bx;
+            xmax = ax < bx ? bx : ax;
+            xmin = cx < xmin ? cx : xmin;
+            xmax = cx > xmax ? cx : xmax;
+            ymin = ay < by ? ay : by;
+            ymax = ay < by ? by : ay;
+            ymin = cy < ymin ? cy : ymin;
+            ymax = cy > ymax ? cy : ymax;
+        }
         if (xmax <= 0 || ymax <= 0 || xmin >= 16 * width || ymin >= 16 * height) {
             rejected++;
             continue;

@@ -344,6 +344,11 @@ static ZS_NOINLINE void setup_run_plain(zs_renderer *r, const uint16_t *idx, uin
      * likewise), which fit int16 where guard * max(width, height) < 2048 */
     const int simd = r->priv.guard * (width > height ? width : height) < 2048;
 #endif
+#ifdef ZS_SPLIT_MUL
+    /* (the same bound) differences below 2^14 where guard * max(width,
+     * height) < 1024: the area's products in 32 bits with no test */
+    const int narrow = r->priv.guard * (width > height ? width : height) < 1024;
+#endif
     for (t = 0; t < n; t++, idx += 3) {
         const zs_vert *a = &pool[idx[0]], *b = &pool[idx[1]], *c = &pool[idx[2]];
         int32_t xmin, xmax, ymin, ymax, row0, row1, col0, col1;
@@ -362,7 +367,12 @@ static ZS_NOINLINE void setup_run_plain(zs_renderer *r, const uint16_t *idx, uin
 #endif
         {
             int32_t ax, bx, cx, ay, by, cy;
+#ifdef ZS_SPLIT_MUL
+            if (narrow ? (b->x - a->x) * (c->y - a->y) - (c->x - a->x) * (b->y - a->y) >= 0
+                       : back_face(a, b, c))
+#else
             if (back_face(a, b, c))
+#endif
                 continue; /* culled: counted at the end */
             ax = a->x;
             bx = b->x;

@@ -336,8 +336,8 @@ static int inside_rows_init(const draw_ctx *c, inside_rows *ir)
 
 /* floor((m . p + 2^15) / 2^16) + t for row k: the hi sum is a * 4 + b, and
  * hi * 2^14 = a * 2^16 + b * 2^14, so the rest fits 32 bits. */
-static inline int32_t inside_row(const inside_rows *ir, int k, int32_t px, int32_t py,
-                                 int32_t pz)
+static ZS_INLINE_ALWAYS int32_t inside_row(const inside_rows *ir, int k, int32_t px, int32_t py,
+                                           int32_t pz)
 {
     int32_t sh = ir->hi[k][0] * px + ir->hi[k][1] * py + ir->hi[k][2] * pz;
     int32_t sl = ir->lo[k][0] * px + ir->lo[k][1] * py + ir->lo[k][2] * pz; /* < 1.5 * 2^30 */

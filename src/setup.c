@@ -325,107 +325,141 @@ static inline uint32_t vert_word(const zs_vert *v)
 }
 #endif
 
-/* zs_setup_run's loop for the plain frame (no A-buffer, hidden lines, setup
- * hook or tag format): zs_setup_triangle's decisions, the pools' state in
- * locals. */
+/* The state of zs_setup_run's plain loop (no A-buffer, hidden lines, setup
+ * hook or tag format), in locals once plain_tri is inlined. */
+typedef struct plain_run {
+    const zs_renderer *r;
+    const zs_vert *pool; /* the draw's first vertex */
+    zs_tri *tris;
+    uint16_t *bucket;
+    const zs_color *colors;
+    uint32_t color, flags, nt, cap, rejected, empty, dropped, base;
+    int32_t width, height;
+} plain_run;
+
+/* Triangle t (indices idx[0..2]): the cull, then zs_setup_triangle's
+ * decisions. simd (a constant where inlined): the Cortex-M4 words. */
+static ZS_INLINE_ALWAYS void plain_tri(plain_run *p, const uint16_t *idx, uint32_t t, int simd)
+{
+    const zs_vert *a = &p->pool[idx[0]], *b = &p->pool[idx[1]], *c = &p->pool[idx[2]];
+    int32_t xmin, xmax, ymin, ymax, row0, row1, col0, col1;
+    zs_tri *rec;
+    (void)simd;
+#ifdef SIMD_AREA
+    if (simd) {
+        uint32_t pa = vert_word(a), pb = vert_word(b), pc = vert_word(c), lo, hi;
+        if (area2_simd(pa, pb, pc) >= 0)
+            return; /* culled: counted at the end */
+        box_simd(pa, pb, pc, &lo, &hi);
+        xmin = zs_asr32(zs_s32(lo << 16), 16);
+        ymin = zs_asr32(zs_s32(lo), 16);
+        xmax = zs_asr32(zs_s32(hi << 16), 16);
+        ymax = zs_asr32(zs_s32(hi), 16);
+    } else
+#endif
+    {
+        int32_t ax, bx, cx, ay, by, cy;
+#ifdef ZS_SPLIT_MUL
+        /* simd here: differences below 2^14, the products in 32 bits */
+        if (simd ? (b->x - a->x) * (c->y - a->y) - (c->x - a->x) * (b->y - a->y) >= 0
+                 : back_face(a, b, c))
+#else
+        if (back_face(a, b, c))
+#endif
+            return; /* culled: counted at the end */
+        ax = a->x;
+        bx = b->x;
+        cx = c->x;
+        ay = a->y;
+        by = b->y;
+        cy = c->y;
+        xmin = ax < bx ? ax : bx;
+        xmax = ax < bx ? bx : ax;
+        xmin = cx < xmin ? cx : xmin;
+        xmax = cx > xmax ? cx : xmax;
+        ymin = ay < by ? ay : by;
+        ymax = ay < by ? by : ay;
+        ymin = cy < ymin ? cy : ymin;
+        ymax = cy > ymax ? cy : ymax;
+    }
+    if (xmax <= 0 || ymax <= 0 || xmin >= 16 * p->width || ymin >= 16 * p->height) {
+        p->rejected++;
+        return;
+    }
+    row0 = zs_first_row(ymin);
+    row0 = row0 < 0 ? 0 : row0;
+    row1 = zs_first_row(ymax);
+    row1 = row1 > p->height ? p->height : row1;
+    col0 = zs_first_row(xmin);
+    col0 = col0 < 0 ? 0 : col0;
+    col1 = zs_first_row(xmax);
+    col1 = col1 > p->width ? p->width : col1;
+    if (row0 >= row1 || col0 >= col1 ||
+        ((row1 - row0) * (col1 - col0) <= 4 &&
+         misses_centres(p->r, a, b, c, row0, row1, col0, col1))) {
+        p->empty++;
+        return;
+    }
+    if (p->nt >= p->cap) {
+        p->dropped++;
+        return;
+    }
+    rec = &p->tris[p->nt];
+    rec->v[0] = (uint16_t)(p->base + idx[0]);
+    rec->v[1] = (uint16_t)(p->base + idx[1]);
+    rec->v[2] = (uint16_t)(p->base + idx[2]);
+    rec->color = p->colors ? (p->colors[t] & 0xFFFFFFu) | p->flags : p->color;
+    rec->next = p->bucket[row0];
+    p->bucket[row0] = (uint16_t)p->nt;
+    p->nt++;
+}
+
+/* zs_setup_run's loop for the plain frame, one copy for each kind of cull. */
 static ZS_NOINLINE void setup_run_plain(zs_renderer *r, const uint16_t *idx, uint32_t n,
                                         uint16_t base, const zs_color *colors, uint32_t color)
 {
-    const zs_vert *pool = r->priv.verts + base;
-    zs_tri *tris = r->priv.tris;
-    uint16_t *bucket = r->priv.buckets;
-    uint32_t nt = r->priv.n_tris, t, rejected = 0, empty = 0, dropped = 0;
-    const uint32_t cap = r->cfg.max_triangles, flags = color & 0xFF000000u;
-    const int32_t width = r->cfg.width, height = r->cfg.height;
-    const uint32_t first = nt;
-#ifdef SIMD_AREA
+    plain_run p;
+    uint32_t t, first;
+    int32_t dim;
+    p.r = r;
+    p.pool = r->priv.verts + base;
+    p.tris = r->priv.tris;
+    p.bucket = r->priv.buckets;
+    p.colors = colors;
+    p.color = color;
+    p.flags = color & 0xFF000000u;
+    p.nt = first = r->priv.n_tris;
+    p.cap = r->cfg.max_triangles;
+    p.rejected = p.empty = p.dropped = 0;
+    p.base = base;
+    p.width = r->cfg.width;
+    p.height = r->cfg.height;
+    dim = p.width > p.height ? p.width : p.height;
     /* every vertex of the draw is inside the guard band: x within
      * (1 -+ guard) 8 width, so differences within 16 guard width (y
-     * likewise), which fit int16 where guard * max(width, height) < 2048 */
-    const int simd = r->priv.guard * (width > height ? width : height) < 2048;
-#endif
-#ifdef ZS_SPLIT_MUL
-    /* (the same bound) differences below 2^14 where guard * max(width,
-     * height) < 1024: the area's products in 32 bits with no test */
-    const int narrow = r->priv.guard * (width > height ? width : height) < 1024;
-#endif
-    for (t = 0; t < n; t++, idx += 3) {
-        const zs_vert *a = &pool[idx[0]], *b = &pool[idx[1]], *c = &pool[idx[2]];
-        int32_t xmin, xmax, ymin, ymax, row0, row1, col0, col1;
-        zs_tri *rec;
+     * likewise): within int16 where guard * max(width, height) < 2048 (the
+     * Cortex-M4 words), below 2^14 where it is below 1024 (Cortex-M0's
+     * 32-bit products) */
 #ifdef SIMD_AREA
-        if (simd) {
-            uint32_t pa = vert_word(a), pb = vert_word(b), pc = vert_word(c), lo, hi;
-            if (area2_simd(pa, pb, pc) >= 0)
-                continue; /* culled: counted at the end */
-            box_simd(pa, pb, pc, &lo, &hi);
-            xmin = zs_asr32(zs_s32(lo << 16), 16);
-            ymin = zs_asr32(zs_s32(lo), 16);
-            xmax = zs_asr32(zs_s32(hi << 16), 16);
-            ymax = zs_asr32(zs_s32(hi), 16);
-        } else
-#endif
-        {
-            int32_t ax, bx, cx, ay, by, cy;
-#ifdef ZS_SPLIT_MUL
-            if (narrow ? (b->x - a->x) * (c->y - a->y) - (c->x - a->x) * (b->y - a->y) >= 0
-                       : back_face(a, b, c))
+    if (r->priv.guard * dim < 2048) {
+#elif defined(ZS_SPLIT_MUL)
+    if (r->priv.guard * dim < 1024) {
 #else
-            if (back_face(a, b, c))
+    if (dim < 0) { /* no such path here */
 #endif
-                continue; /* culled: counted at the end */
-            ax = a->x;
-            bx = b->x;
-            cx = c->x;
-            ay = a->y;
-            by = b->y;
-            cy = c->y;
-            xmin = ax < bx ? ax : bx;
-            xmax = ax < bx ? bx : ax;
-            xmin = cx < xmin ? cx : xmin;
-            xmax = cx > xmax ? cx : xmax;
-            ymin = ay < by ? ay : by;
-            ymax = ay < by ? by : ay;
-            ymin = cy < ymin ? cy : ymin;
-            ymax = cy > ymax ? cy : ymax;
-        }
-        if (xmax <= 0 || ymax <= 0 || xmin >= 16 * width || ymin >= 16 * height) {
-            rejected++;
-            continue;
-        }
-        row0 = zs_first_row(ymin);
-        row0 = row0 < 0 ? 0 : row0;
-        row1 = zs_first_row(ymax);
-        row1 = row1 > height ? height : row1;
-        col0 = zs_first_row(xmin);
-        col0 = col0 < 0 ? 0 : col0;
-        col1 = zs_first_row(xmax);
-        col1 = col1 > width ? width : col1;
-        if (row0 >= row1 || col0 >= col1 ||
-            ((row1 - row0) * (col1 - col0) <= 4 && misses_centres(r, a, b, c, row0, row1, col0, col1))) {
-            empty++;
-            continue;
-        }
-        if (nt >= cap) {
-            dropped++;
-            continue;
-        }
-        rec = &tris[nt];
-        rec->v[0] = (uint16_t)(base + idx[0]);
-        rec->v[1] = (uint16_t)(base + idx[1]);
-        rec->v[2] = (uint16_t)(base + idx[2]);
-        rec->color = colors ? (colors[t] & 0xFFFFFFu) | flags : color;
-        rec->next = bucket[row0];
-        bucket[row0] = (uint16_t)nt;
-        nt++;
+        for (t = 0; t < n; t++, idx += 3)
+            plain_tri(&p, idx, t, 1);
+    } else {
+        for (t = 0; t < n; t++, idx += 3)
+            plain_tri(&p, idx, t, 0);
     }
-    r->priv.n_tris = (uint16_t)nt;
-    r->stats.records += nt - first;
-    r->stats.tris_stored += nt - first;
-    r->stats.tris_culled += n - (nt - first) - rejected - empty - dropped;
-    r->stats.tris_rejected += rejected;
-    r->stats.tris_empty += empty;
-    r->stats.tris_dropped += dropped;
+    r->priv.n_tris = (uint16_t)p.nt;
+    r->stats.records += p.nt - first;
+    r->stats.tris_stored += p.nt - first;
+    r->stats.tris_culled += n - (p.nt - first) - p.rejected - p.empty - p.dropped;
+    r->stats.tris_rejected += p.rejected;
+    r->stats.tris_empty += p.empty;
+    r->stats.tris_dropped += p.dropped;
 }
 
 void zs_setup_run(zs_renderer *r, const uint16_t *idx, uint32_t n, uint16_t base,

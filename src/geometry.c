@@ -328,7 +328,7 @@ static int inside_rows_init(const draw_ctx *c, inside_rows *ir)
             ir->lo[k][j] = (int32_t)((uint32_t)m & 0x3FFFu);
             sum += ir->hi[k][j] < 0 ? -ir->hi[k][j] : ir->hi[k][j];
         }
-        if (sum >= (1 << 15)) /* |sum of hi * p| < 2^30 */
+        if (sum >= ((int32_t)1 << 15)) /* |sum of hi * p| < 2^30 */
             return 0;
     }
     return 1;
@@ -345,12 +345,13 @@ static ZS_INLINE_ALWAYS int32_t inside_row(const inside_rows *ir, int k, int32_t
 }
 #endif
 
-/* The first n vertices of a fast draw (far below 2^29, no shade words) into
- * the pool at v:
+/* The first n vertices of a fast draw (far below 2^29) into the pool at v:
  * clip coordinates (fast_clip's) and, for those inside near, far and the
- * guard band (zs_outcode's test: then they fit 32 bits), the projection, in
- * one pass; the rest are marked unprojected. Returns whether all are inside
- * (what box_inside tells from the bounding box, here from each vertex). */
+ * guard band (zs_outcode's test), the projection, in one pass; the rest are
+ * marked unprojected. Returns whether all are inside (what
+ * box_inside tells from the bounding box, here from each vertex: the same
+ * vertices are projected either way, and an inside draw's triangles go the
+ * same way as the per-triangle loop's). */
 static ZS_NOINLINE int project_all(const draw_ctx *c, const inside_rows *ir, const zs_proj *p,
                                    zs_vert *v, uint32_t n)
 {
@@ -408,9 +409,17 @@ static ZS_NOINLINE int transform_vertices(const draw_ctx *c, uint16_t base, uint
     unsigned test;
     /* zs_project_fast suits every vertex within near, far and the guard
      * band when far is below 2^29 */
-    if (c->fast && !r->priv.vshade && zs_proj_init(r, &p) &&
-        r->cam.far_z < ((int32_t)1 << 29) && inside_rows_init(c, &ir))
-        return project_all(c, &ir, &p, v, n);
+    if (c->fast && zs_proj_init(r, &p) && r->cam.far_z < ((int32_t)1 << 29) &&
+        inside_rows_init(c, &ir)) {
+        int all = project_all(c, &ir, &p, v, n);
+        if (r->priv.vshade) /* the shade words in a second pass (w again) */
+            for (i = 0; i < n; i++) {
+                int64_t xc, yc, w;
+                to_clip(c, i, &xc, &yc, &w);
+                r->priv.vshade[base + i] = vertex_shade(c, i, w);
+            }
+        return all;
+    }
     /* a mesh wholly inside needs no outcode per vertex */
     test = box_inside(c, n) ? 0u : (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_GUARD);
     for (i = 0; i < n; i++, v++) {

@@ -156,16 +156,26 @@ static ZS_NOINLINE int misses_centres(const zs_renderer *r, const zs_vert *a, co
 {
     int32_t ax = a->x, ay = a->y, bx = b->x, by = b->y, cx = c->x, cy = c->y;
     int32_t px = 16 * col0 + 8, py = 16 * row0 + 8, i, j;
+    int32_t d0x, d0y, d1x, d1y, d2x, d2y, e0, e1, e2;
     /* a box the screen did not cut spans under 16 (rows + 1) in y (x
      * likewise): within 2^12 */
     if ((row0 == 0 || row1 == (int32_t)r->cfg.height || col0 == 0 ||
          col1 == (int32_t)r->cfg.width) &&
         (span3(ax, bx, cx) >= 4096 || span3(ay, by, cy) >= 4096))
         return 0;
-    int32_t d0x = cx - ax, d0y = cy - ay, d1x = bx - cx, d1y = by - cy, d2x = ax - bx,
-            d2y = ay - by;
-    int32_t e0 = edge_at(ax, ay, d0x, d0y, px, py), e1 = edge_at(cx, cy, d1x, d1y, px, py),
-            e2 = edge_at(bx, by, d2x, d2y, px, py);
+    d0x = cx - ax;
+    d0y = cy - ay;
+    d1x = bx - cx;
+    d1y = by - cy;
+    d2x = ax - bx;
+    d2y = ay - by;
+    e0 = edge_at(ax, ay, d0x, d0y, px, py);
+    e1 = edge_at(cx, cy, d1x, d1y, px, py);
+    e2 = edge_at(bx, by, d2x, d2y, px, py);
+    if ((e0 | e1 | e2) >= 0) /* the first centre */
+        return 0;
+    if (row1 - row0 + col1 - col0 == 2) /* the only one (the commonest case) */
+        return 1;
     for (j = row0; j < row1; j++) {
         int32_t f0 = e0, f1 = e1, f2 = e2;
         for (i = col0; i < col1; i++) {

@@ -527,12 +527,12 @@ static inline int32_t zs_s32(uint32_t u)
 
 /* zs_project (setup.c), the same results, for a vertex with near <= w <= far,
  * w < 2^29 and |xc|, |yc| <= 7 w (inside the guard band, or off it by a
- * clipper's rounding) and below 2^31, when depth_scale is not 0: then
- * xc / w in Q28 fits 32 bits, and so do the depth's words. With inside set the vertex is within
- * the guard band, |xc|, |yc| <= guard * w: then x and y need no clamp, as
- * xc * inv / 2^(33 - s) <= guard * 2^28 (inv <= 2^61 / (w 2^s)) puts x
- * within hw +- guard * hw, inside +-(guard + 1) 8 width <= 32767 (the
- * guard's definition, renderer.c), and y likewise. */
+ * clipper's rounding) and below 2^31, when depth_scale is not 0: then xc / w
+ * in Q28 fits 32 bits, and so do the depth's words. With inside set the
+ * vertex is within the guard band, |xc|, |yc| <= guard * w: then x and y
+ * need no clamp, as |xc| * inv / 2^(33 - s) <= guard * 2^28 (inv <= 2^61 /
+ * (w 2^s)) puts x within hw +- guard * hw, inside +-(guard + 1) 8 width <=
+ * 32767 (the guard's definition, renderer.c), and y likewise. */
 static inline void zs_project_fast(const zs_proj *p, int32_t xc, int32_t yc, int32_t w,
                                    zs_vert *v, int inside)
 {

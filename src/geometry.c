@@ -735,7 +735,7 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
             outcome = clip_and_setup(&c, base, t,
                                      tag_fast ? tag_from_base(tag_base, t) : tag_of(tag0, t));
         } else {
-            int64_t area2 = zs_area2(v0, v1, v2);
+            int64_t area2 = zs_area2_inline(v0, v1, v2);
             if (area2 >= 0) /* culled before lighting the face */
                 outcome = ZS_SETUP_CULLED;
             else

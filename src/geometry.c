@@ -412,11 +412,16 @@ static ZS_NOINLINE int transform_vertices(const draw_ctx *c, uint16_t base, uint
     if (c->fast && zs_proj_init(r, &p) && r->cam.far_z < ((int32_t)1 << 29) &&
         inside_rows_init(c, &ir)) {
         int all = project_all(c, &ir, &p, v, n);
-        if (r->priv.vshade) /* the shade words in a second pass (w again) */
+        if (r->priv.vshade || !all) /* shade words, outcodes: a second pass */
             for (i = 0; i < n; i++) {
                 int64_t xc, yc, w;
+                if (!r->priv.vshade && !(v[i].z & ZS_VERT_UNPROJECTED))
+                    continue;
                 to_clip(c, i, &xc, &yc, &w);
-                r->priv.vshade[base + i] = vertex_shade(c, i, w);
+                if (r->priv.vshade)
+                    r->priv.vshade[base + i] = vertex_shade(c, i, w);
+                if (v[i].z & ZS_VERT_UNPROJECTED) /* for clip_and_setup */
+                    v[i].x = (int16_t)zs_outcode(r, xc, yc, w);
             }
         return all;
     }
@@ -427,9 +432,10 @@ static ZS_NOINLINE int transform_vertices(const draw_ctx *c, uint16_t base, uint
         to_clip(c, i, &xc, &yc, &w);
         if (r->priv.vshade)
             r->priv.vshade[base + i] = vertex_shade(c, i, w);
-        if (test && (zs_outcode(r, xc, yc, w) & test))
+        if (test && (zs_outcode(r, xc, yc, w) & test)) {
             v->z = ZS_VERT_UNPROJECTED;
-        else /* near <= w <= far: 32 bits */
+            v->x = (int16_t)zs_outcode(r, xc, yc, w); /* for clip_and_setup */
+        } else /* near <= w <= far: 32 bits */
             zs_project(r, xc, yc, (int32_t)w, &v->x, &v->y, &v->z);
     }
     return test == 0;
@@ -505,6 +511,25 @@ static ZS_COLD int clip_and_setup(draw_ctx *c, uint16_t base, uint32_t t, uint16
     int n, k, outcome = ZS_SETUP_REJECTED;
     uint32_t color;
     const uint16_t *idx = c->mesh->indices + 3u * t;
+    /* the unprojected vertices' outcodes were kept in their x: where they
+     * share no reject bit neither do all three, else the projected ones'
+     * outcodes decide (the usual rejects need no clip coordinates at all) */
+    for (k = 0; k < 3; k++) {
+        const zs_vert *pv = &pool[base + idx[k]];
+        if (pv->z & ZS_VERT_UNPROJECTED)
+            and_codes &= (unsigned)pv->x;
+    }
+    if (and_codes & REJECT_MASK) {
+        for (k = 0; k < 3; k++) {
+            const zs_vert *pv = &pool[base + idx[k]];
+            if (!(pv->z & ZS_VERT_UNPROJECTED)) {
+                to_clip(c, idx[k], &v[k].xc, &v[k].yc, &v[k].w);
+                and_codes &= zs_outcode(r, v[k].xc, v[k].yc, v[k].w);
+            }
+        }
+        if (and_codes & REJECT_MASK)
+            return ZS_SETUP_REJECTED;
+    }
     for (k = 0; k < 3; k++) {
         const zs_vert *pv = &pool[base + idx[k]];
         to_clip(c, idx[k], &v[k].xc, &v[k].yc, &v[k].w);
@@ -512,10 +537,7 @@ static ZS_COLD int clip_and_setup(draw_ctx *c, uint16_t base, uint32_t t, uint16
         v[k].pool = (pv->z & ZS_VERT_UNPROJECTED) ? (uint16_t)ZS_NONE : (uint16_t)(base + idx[k]);
         v[k].uv[0] = c->tex_slot ? c->mesh->uvs[2u * idx[k]] : 0;
         v[k].uv[1] = c->tex_slot ? c->mesh->uvs[2u * idx[k] + 1u] : 0;
-        and_codes &= zs_outcode(r, v[k].xc, v[k].yc, v[k].w);
     }
-    if (and_codes & REJECT_MASK)
-        return ZS_SETUP_REJECTED;
     r->stats.tris_clipped++;
     /* start from a canonical vertex: the same triangle with its vertices
      * rotated is then cut into the same pieces (equal planes, so exact ties

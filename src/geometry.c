@@ -429,12 +429,15 @@ static ZS_NOINLINE int transform_vertices(const draw_ctx *c, uint16_t base, uint
     test = box_inside(c, n) ? 0u : (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_GUARD);
     for (i = 0; i < n; i++, v++) {
         int64_t xc, yc, w;
+        unsigned oc = 0;
         to_clip(c, i, &xc, &yc, &w);
         if (r->priv.vshade)
             r->priv.vshade[base + i] = vertex_shade(c, i, w);
-        if (test && (zs_outcode(r, xc, yc, w) & test)) {
+        if (test)
+            oc = zs_outcode(r, xc, yc, w);
+        if (oc & test) {
             v->z = ZS_VERT_UNPROJECTED;
-            v->x = (int16_t)zs_outcode(r, xc, yc, w); /* for clip_and_setup */
+            v->x = (int16_t)oc; /* for clip_and_setup */
         } else /* near <= w <= far: 32 bits */
             zs_project(r, xc, yc, (int32_t)w, &v->x, &v->y, &v->z);
     }

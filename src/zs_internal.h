@@ -26,7 +26,8 @@ enum { ZS_STATE_NONE = 0, ZS_STATE_READY, ZS_STATE_OPEN, ZS_STATE_RENDERING, ZS_
  * array (vshade) unless the renderer is flat only. */
 typedef struct zs_vert {
     int16_t x, y;    /* 28.4 pixels, y down, within the guard band */
-    uint32_t z;      /* window depth Q2.30; ZS_VERT_UNPROJECTED if outside */
+    uint32_t z;      /* window depth Q2.30; ZS_VERT_UNPROJECTED if outside
+                        (then x holds its outcode, geometry.c's only) */
 } zs_vert;
 #define ZS_VERT_UNPROJECTED 0x80000000u
 

@@ -127,7 +127,11 @@ uint32_t zs_udiv64_32(uint32_t nh, uint32_t nl, uint32_t v)
 
 uint32_t zs_recip61(uint32_t d)
 {
+#ifdef ZS_SPLIT_MUL
     return zs_udiv64_32((uint32_t)1 << 30, 0u, d << 1); /* 2^62 / 2d */
+#else
+    return zs_recip61_fast(d); /* one 32-bit division and products */
+#endif
 }
 
 void zs_recip_init(zs_recip *rc, int64_t d)

@@ -88,19 +88,6 @@ static ZS_NOINLINE void model_view(draw_ctx *c)
     }
 }
 
-/* m * p for p in int16 range. Cortex-M0 has no 32x32->64 multiply: there
- * it is two 32-bit products (|hi * p| <= 2^30, |lo * p| < 2^31) instead of
- * a helper call; elsewhere one widening multiply. */
-static inline int64_t mul_32x16(int32_t m, int32_t p)
-{
-#if defined(__ARM_ARCH_6M__)
-    int32_t hi = zs_asr32(m, 16), lo = (int32_t)((uint32_t)m & 0xFFFFu);
-    return (int64_t)(hi * p) * 65536 + lo * p;
-#else
-    return (int64_t)m * p;
-#endif
-}
-
 /* Model-space vertex i to clip space (Q16.16, not saturated: clip
  * coordinates may pass 2^31 where a narrow field of view or a far vertex
  * magnifies eye coordinates; outcodes and the clipper take them whole). */
@@ -110,9 +97,9 @@ static inline void fast_clip(const draw_ctx *c, int32_t px, int32_t py, int32_t 
                              int64_t *xc, int64_t *yc, int64_t *w)
 {
     const int32_t *m0 = c->clip[0], *m1 = c->clip[1], *m2 = c->clip[2];
-    int64_t sx = mul_32x16(m0[0], px) + mul_32x16(m0[1], py) + mul_32x16(m0[2], pz) + 32768;
-    int64_t sy = mul_32x16(m1[0], px) + mul_32x16(m1[1], py) + mul_32x16(m1[2], pz) + 32768;
-    int64_t sw = mul_32x16(m2[0], px) + mul_32x16(m2[1], py) + mul_32x16(m2[2], pz) + 32768;
+    int64_t sx = zs_mul_32x16(m0[0], px) + zs_mul_32x16(m0[1], py) + zs_mul_32x16(m0[2], pz) + 32768;
+    int64_t sy = zs_mul_32x16(m1[0], px) + zs_mul_32x16(m1[1], py) + zs_mul_32x16(m1[2], pz) + 32768;
+    int64_t sw = zs_mul_32x16(m2[0], px) + zs_mul_32x16(m2[1], py) + zs_mul_32x16(m2[2], pz) + 32768;
     *xc = zs_asr64(sx, 16) + c->clip_t[0];
     *yc = zs_asr64(sy, 16) + c->clip_t[1];
     *w = zs_asr64(sw, 16) + c->clip_t[2];
@@ -295,24 +282,163 @@ static ZS_NOINLINE int box_inside(const draw_ctx *c, uint32_t n)
     return 1;
 }
 
+/* The clip rows of a fast draw for project_all, with the translations and
+ * rounding folded into one constant per row (Cortex-M4 and the like: each
+ * row is a 64-bit multiply-accumulate chain); 0 where a clip coordinate
+ * might not fit 32 bits. */
+#ifndef ZS_SPLIT_MUL
+typedef struct inside_rows {
+    int64_t k[3]; /* 2^16 clip_t + 2^15 */
+} inside_rows;
+
+static int inside_rows_init(const draw_ctx *c, inside_rows *ir)
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        /* |clip coordinate| <= sum |m| 2^15 / 2^16 + |t| + 1: below 2^31 for
+         * every int16 position, so it is taken as 32 bits */
+        const int32_t *m = c->clip[k];
+        if (abs64(m[0]) + abs64(m[1]) + abs64(m[2]) + 2 * abs64(c->clip_t[k]) >=
+            ((int64_t)1 << 32) - 4)
+            return 0;
+        ir->k[k] = c->clip_t[k] * 65536 + 32768;
+    }
+    return 1;
+}
+#else
+/* Cortex-M0: each coefficient m split as hi * 2^14 + lo, lo in [0, 2^14),
+ * so that a row's three products of each part sum in 32 bits (where the
+ * hi parts are small, as for every real mesh), no 64-bit product; the clip
+ * coordinates then fit 32 bits. */
+typedef struct inside_rows {
+    int32_t hi[3][3], lo[3][3], t[3];
+} inside_rows;
+
+static int inside_rows_init(const draw_ctx *c, inside_rows *ir)
+{
+    int k, j;
+    for (k = 0; k < 3; k++) {
+        int32_t sum = 0;
+        if (abs64(c->clip_t[k]) >= ((int64_t)1 << 30))
+            return 0;
+        ir->t[k] = (int32_t)c->clip_t[k];
+        for (j = 0; j < 3; j++) {
+            int32_t m = c->clip[k][j];
+            ir->hi[k][j] = zs_asr32(m, 14);
+            ir->lo[k][j] = (int32_t)((uint32_t)m & 0x3FFFu);
+            sum += ir->hi[k][j] < 0 ? -ir->hi[k][j] : ir->hi[k][j];
+        }
+        if (sum >= ((int32_t)1 << 15)) /* |sum of hi * p| < 2^30 */
+            return 0;
+    }
+    return 1;
+}
+
+/* floor((m . p + 2^15) / 2^16) + t for row k: the hi sum is a * 4 + b, and
+ * hi * 2^14 = a * 2^16 + b * 2^14, so the rest fits 32 bits. */
+static ZS_INLINE_ALWAYS int32_t inside_row(const inside_rows *ir, int k, int32_t px, int32_t py,
+                                           int32_t pz)
+{
+    int32_t sh = ir->hi[k][0] * px + ir->hi[k][1] * py + ir->hi[k][2] * pz;
+    int32_t sl = ir->lo[k][0] * px + ir->lo[k][1] * py + ir->lo[k][2] * pz; /* < 1.5 * 2^30 */
+    return zs_asr32(sh, 2) + zs_asr32((sh & 3) * 16384 + sl + 32768, 16) + ir->t[k];
+}
+#endif
+
+/* The first n vertices of a fast draw (far below 2^29) into the pool at v:
+ * clip coordinates (fast_clip's) and, for those inside near, far and the
+ * guard band (zs_outcode's test), the projection, in one pass; the rest are
+ * marked unprojected. Returns whether all are inside (what
+ * box_inside tells from the bounding box, here from each vertex: the same
+ * vertices are projected either way, and an inside draw's triangles go the
+ * same way as the per-triangle loop's). */
+static ZS_NOINLINE int project_all(const draw_ctx *c, const inside_rows *ir, const zs_proj *p,
+                                   zs_vert *v, uint32_t n)
+{
+    const zs_renderer *r = c->r;
+    const int16_t *pos = c->mesh->positions, *end = pos + 3u * n;
+    const uint32_t near_z = (uint32_t)r->cam.near_z;
+    const uint32_t depth = (uint32_t)r->cam.far_z - near_z;
+    const uint32_t guard = (uint32_t)r->priv.guard;
+    unsigned outside = 0;
+#ifndef ZS_SPLIT_MUL
+    const int32_t *m0 = c->clip[0], *m1 = c->clip[1], *m2 = c->clip[2];
+#endif
+    for (; pos != end; pos += 3, v++) {
+        int32_t px = pos[0], py = pos[1], pz = pos[2], xc, yc, w;
+        uint32_t gw;
+#ifndef ZS_SPLIT_MUL
+        xc = (int32_t)zs_asr64(ir->k[0] + (int64_t)m0[0] * px + (int64_t)m0[1] * py +
+                                   (int64_t)m0[2] * pz, 16);
+        yc = (int32_t)zs_asr64(ir->k[1] + (int64_t)m1[0] * px + (int64_t)m1[1] * py +
+                                   (int64_t)m1[2] * pz, 16);
+        w = (int32_t)zs_asr64(ir->k[2] + (int64_t)m2[0] * px + (int64_t)m2[1] * py +
+                                  (int64_t)m2[2] * pz, 16);
+#else
+        xc = inside_row(ir, 0, px, py, pz);
+        yc = inside_row(ir, 1, px, py, pz);
+        w = inside_row(ir, 2, px, py, pz);
+#endif
+        /* near <= w <= far < 2^29, |xc|, |yc| <= guard * w < 2^31, by
+         * differences mod 2^32 */
+        if ((uint32_t)w - near_z > depth)
+            goto out;
+        gw = guard * (uint32_t)w;
+        if ((uint32_t)xc + gw > 2u * gw || (uint32_t)yc + gw > 2u * gw)
+            goto out;
+        ZS_PROJECT_FAST(p, xc, yc, w, v, 1);
+        continue;
+    out:
+        v->z = ZS_VERT_UNPROJECTED;
+        outside = 1;
+    }
+    return !outside;
+}
+
 /* Vertices base .. base + n - 1 of the pool from the mesh's first n. Out of
  * line (called once a draw), so its locals stay off zs_draw's frame, which
- * lies under the clipper's. */
+ * lies under the clipper's. Returns whether all are inside near, far and the
+ * guard band (then each triangle needs no clip test). */
 static ZS_NOINLINE int transform_vertices(const draw_ctx *c, uint16_t base, uint32_t n)
 {
     zs_renderer *r = c->r;
     zs_vert *v = &r->priv.verts[base];
     uint32_t i;
+    zs_proj p;
+    inside_rows ir;
+    unsigned test;
+    /* zs_project_fast suits every vertex within near, far and the guard
+     * band when far is below 2^29 */
+    if (c->fast && zs_proj_init(r, &p) && r->cam.far_z < ((int32_t)1 << 29) &&
+        inside_rows_init(c, &ir)) {
+        int all = project_all(c, &ir, &p, v, n);
+        if (r->priv.vshade || !all) /* shade words, outcodes: a second pass */
+            for (i = 0; i < n; i++) {
+                int64_t xc, yc, w;
+                if (!r->priv.vshade && !(v[i].z & ZS_VERT_UNPROJECTED))
+                    continue;
+                to_clip(c, i, &xc, &yc, &w);
+                if (r->priv.vshade)
+                    r->priv.vshade[base + i] = vertex_shade(c, i, w);
+                if (v[i].z & ZS_VERT_UNPROJECTED) /* for clip_and_setup */
+                    v[i].x = (int16_t)zs_outcode(r, xc, yc, w);
+            }
+        return all;
+    }
     /* a mesh wholly inside needs no outcode per vertex */
-    unsigned test = box_inside(c, n) ? 0u : (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_GUARD);
+    test = box_inside(c, n) ? 0u : (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_GUARD);
     for (i = 0; i < n; i++, v++) {
         int64_t xc, yc, w;
+        unsigned oc = 0;
         to_clip(c, i, &xc, &yc, &w);
         if (ZS_HAS_PLANES_ && r->priv.vshade)
             r->priv.vshade[base + i] = vertex_shade(c, i, w);
-        if (test && (zs_outcode(r, xc, yc, w) & test))
+        if (test)
+            oc = zs_outcode(r, xc, yc, w);
+        if (oc & test) {
             v->z = ZS_VERT_UNPROJECTED;
-        else /* near <= w <= far: 32 bits */
+            v->x = (int16_t)oc; /* for clip_and_setup */
+        } else /* near <= w <= far: 32 bits */
             zs_project(r, xc, yc, (int32_t)w, &v->x, &v->y, &v->z);
     }
     return test == 0;
@@ -388,6 +514,25 @@ static ZS_COLD int clip_and_setup(draw_ctx *c, uint16_t base, uint32_t t, uint16
     int n, k, outcome = ZS_SETUP_REJECTED;
     uint32_t color;
     const uint16_t *idx = c->mesh->indices + 3u * t;
+    /* the unprojected vertices' outcodes were kept in their x: where they
+     * share no reject bit neither do all three, else the projected ones'
+     * outcodes decide (the usual rejects need no clip coordinates at all) */
+    for (k = 0; k < 3; k++) {
+        const zs_vert *pv = &pool[base + idx[k]];
+        if (pv->z & ZS_VERT_UNPROJECTED)
+            and_codes &= (unsigned)pv->x;
+    }
+    if (and_codes & REJECT_MASK) {
+        for (k = 0; k < 3; k++) {
+            const zs_vert *pv = &pool[base + idx[k]];
+            if (!(pv->z & ZS_VERT_UNPROJECTED)) {
+                to_clip(c, idx[k], &v[k].xc, &v[k].yc, &v[k].w);
+                and_codes &= zs_outcode(r, v[k].xc, v[k].yc, v[k].w);
+            }
+        }
+        if (and_codes & REJECT_MASK)
+            return ZS_SETUP_REJECTED;
+    }
     for (k = 0; k < 3; k++) {
         const zs_vert *pv = &pool[base + idx[k]];
         to_clip(c, idx[k], &v[k].xc, &v[k].yc, &v[k].w);
@@ -395,10 +540,7 @@ static ZS_COLD int clip_and_setup(draw_ctx *c, uint16_t base, uint32_t t, uint16
         v[k].pool = (pv->z & ZS_VERT_UNPROJECTED) ? (uint16_t)ZS_NONE : (uint16_t)(base + idx[k]);
         v[k].uv[0] = c->tex_slot ? c->mesh->uvs[2u * idx[k]] : 0;
         v[k].uv[1] = c->tex_slot ? c->mesh->uvs[2u * idx[k] + 1u] : 0;
-        and_codes &= zs_outcode(r, v[k].xc, v[k].yc, v[k].w);
     }
-    if (and_codes & REJECT_MASK)
-        return ZS_SETUP_REJECTED;
     r->stats.tris_clipped++;
     /* start from a canonical vertex: the same triangle with its vertices
      * rotated is then cut into the same pieces (equal planes, so exact ties
@@ -447,6 +589,16 @@ static ZS_NOINLINE void setup_inside(draw_ctx *c, uint16_t base, uint32_t tag_ba
     const zs_vert *pool = r->priv.verts + base;
     const uint16_t *idx = m->indices;
     uint32_t t, n = m->triangle_count, culled = 0;
+    /* face colours from a table or one colour, not lit per face (face_color's
+     * first and last cases): setup.c's loop, each colour a load */
+    if (!(c->lit && !c->vertex_light) && (c->vertex_color || m->face_colors || !m->vertex_colors)) {
+        uint32_t flags = c->tri_flags << 24;
+        if (c->vertex_color)
+            zs_setup_run(r, idx, n, base, 0, WHITE | flags, tag_base);
+        else
+            zs_setup_run(r, idx, n, base, m->face_colors, (m->color & WHITE) | flags, tag_base);
+        return;
+    }
     for (t = 0; t < n; t++, idx += 3) {
         uint32_t i0 = idx[0], i1 = idx[1], i2 = idx[2];
         int64_t area2 = zs_area2_inline(&pool[i0], &pool[i1], &pool[i2]);
@@ -479,12 +631,51 @@ static ZS_NOINLINE void setup_inside(draw_ctx *c, uint16_t base, uint32_t tag_ba
  * branch per index. */
 static ZS_NOINLINE int indices_valid(const uint16_t *idx, uint32_t tris, uint32_t vcount)
 {
-    const uint16_t *const end = idx + 3u * tris;
+    const uint16_t *end = idx + 3u * tris;
     const uint32_t last = vcount - 1u;
-    uint32_t bad = 0;
+    uint32_t bad = 0, acc = 0;
+#if defined(__ARM_FEATURE_SIMD32) && defined(ZS_WORD_STORES)
+    /* Cortex-M4: two indices a word, both against last at once (usub16 sets
+     * a lane's GE flag where index <= last, sel keeps bad's lane there and
+     * takes all ones elsewhere) */
+    if (((uintptr_t)idx & 2u) && idx != end)
+        bad |= last - *idx++; /* to a word boundary */
+    if (end - idx >= 2) {
+        const zs_word_alias *w = (const zs_word_alias *)(const void *)idx;
+        const zs_word_alias *wend = w + (end - idx) / 2;
+        const uint32_t lim = last * 0x10001u, ones = 0xFFFFFFFFu; /* last <= 65534 */
+        if ((wend - w) & 1) { /* then pairs of words */
+            uint32_t t;
+            __asm__(".syntax unified\n"
+                    "    usub16 %1, %2, %3\n"
+                    "    sel %0, %0, %4\n"
+                    : "+r"(acc), "=&r"(t)
+                    : "r"(lim), "r"(*w++), "r"(ones)
+                    : "cc");
+        }
+        if (w != wend) {
+            uint32_t t, a, b;
+            __asm__(".syntax unified\n"
+                    "1:  ldrd %[a], %[b], [%[w]], #8\n"
+                    "    usub16 %[t], %[lim], %[a]\n"
+                    "    sel %[acc], %[acc], %[ones]\n"
+                    "    usub16 %[t], %[lim], %[b]\n"
+                    "    sel %[acc], %[acc], %[ones]\n"
+                    "    cmp %[w], %[end]\n"
+                    "    bne 1b\n"
+                    : [w] "+r"(w), [acc] "+r"(acc), [t] "=&r"(t), [a] "=&r"(a), [b] "=&r"(b)
+                    : [end] "r"(wend), [lim] "r"(lim), [ones] "r"(ones)
+                    : "cc", "memory");
+        }
+        idx = (const uint16_t *)(const void *)wend;
+    }
+    for (; idx != end; idx++)
+        bad |= last - *idx;
+#else
     for (; idx != end; idx += 3)
         bad |= (last - idx[0]) | (last - idx[1]) | (last - idx[2]);
-    return (bad >> 31) == 0;
+#endif
+    return (bad >> 31) == 0 && acc == 0;
 }
 
 zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
@@ -569,7 +760,7 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
             outcome = clip_and_setup(&c, base, t,
                                      tag_fast ? tag_from_base(tag_base, t) : tag_of(tag0, t));
         } else {
-            int64_t area2 = zs_area2(v0, v1, v2);
+            int64_t area2 = zs_area2_inline(v0, v1, v2);
             if (area2 >= 0) /* culled before lighting the face */
                 outcome = ZS_SETUP_CULLED;
             else

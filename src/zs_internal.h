@@ -33,7 +33,8 @@ enum { ZS_STATE_NONE = 0, ZS_STATE_READY, ZS_STATE_OPEN, ZS_STATE_RENDERING, ZS_
  * array (vshade) unless the renderer is flat only. */
 typedef struct zs_vert {
     int16_t x, y;    /* 28.4 pixels, y down, within the guard band */
-    uint32_t z;      /* window depth Q2.30; ZS_VERT_UNPROJECTED if outside */
+    uint32_t z;      /* window depth Q2.30; ZS_VERT_UNPROJECTED if outside
+                        (then x holds its outcode, geometry.c's only) */
 } zs_vert;
 #define ZS_VERT_UNPROJECTED 0x80000000u
 
@@ -182,6 +183,10 @@ uint16_t zs_project_vertex(zs_renderer *r, int64_t xc, int64_t yc, int32_t w, ui
 /* Projected vertex data without storing it (same arithmetic as above). */
 void zs_project(const zs_renderer *r, int64_t xc, int64_t yc, int32_t w, int16_t *x,
                 int16_t *y, uint32_t *z);
+/* The projection constants of the current frame for zs_project_fast; 0 when
+ * it does not apply (depth_scale 0: near close to far). */
+typedef struct zs_proj zs_proj;
+int zs_proj_init(const zs_renderer *r, zs_proj *p);
 /* Twice the signed screen area (1/256 px^2); < 0 for a front face. */
 int64_t zs_area2(const zs_vert *a, const zs_vert *b, const zs_vert *c);
 /* The same inline (the cull of every triangle): u * v for |u|, |v| < 2^16,
@@ -208,6 +213,13 @@ static inline int32_t zs_first_row(int32_t y)
 int zs_setup_triangle(zs_renderer *r, uint16_t v0, uint16_t v1, uint16_t v2, int64_t area2,
                       uint32_t color,
                       uint16_t tag);
+/* The triangles idx[0 .. 3n - 1] of a draw whose vertices (base + index) are
+ * all projected: culled, bounded and stored as by zs_setup_triangle, and
+ * counted. Triangle t's colour is (colors[t] & 0xFFFFFF) | (color's flags
+ * byte), or color where colors is NULL; its tag (tag_base + t) % 65535 + 1
+ * (tag_base < 65535, n < 65535). */
+void zs_setup_run(zs_renderer *r, const uint16_t *idx, uint32_t n, uint16_t base,
+                  const zs_color *colors, uint32_t color, uint32_t tag_base);
 /* clip.c: clips polygon in[n] against the near/far planes and the guard band;
  * returns the vertex count of out (0..9). out must hold 9; it may be in
  * (in is read only before the first plane that cuts). */
@@ -428,6 +440,146 @@ static inline int32_t zs_clampi(int32_t v, int32_t lo, int32_t hi)
 {
     return v < lo ? lo : (v > hi ? hi : v);
 }
+
+/* ---- the projection of a vertex (front end: setup.c, geometry.c) ---- */
+/* floor(2^61 / d) for d in [2^30, 2^31) without a 64-bit division, where a
+ * 32-bit division is one instruction (not with ZS_SPLIT_MUL, see fixed.c):
+ * y0 = 2^46 / round(d / 2^15) is within eps in [-2^-16, 2^-15] of 2^61 / d;
+ * y0 (1 + eps + eps^2) is then within 2^-13 of it, and every truncation
+ * below rounds down (the -1/256 too), so y lands on the floor or one short,
+ * which the 32-bit remainder 2^61 - d y in [0, 2d) settles. Checked for all
+ * 2^30 divisors against the division (tests/core/test_fixed.c samples). */
+static inline uint32_t zs_recip61_fast(uint32_t d)
+{
+    uint32_t dh = (d + 0x4000u) >> 15;                 /* [2^15, 2^16] */
+    uint32_t y = (0xFFFFFFFFu / dh) << 14;             /* < 2^31 */
+    int64_t e = ((int64_t)1 << 61) - (int64_t)((uint64_t)d * y); /* 2^61 eps, < 2^47 */
+    int32_t f = (int32_t)zs_asr64(e, 16);
+    int64_t t = (int64_t)(int32_t)y * f;               /* y eps 2^45 */
+    int32_t th = (int32_t)zs_asr64(t, 32);
+    int64_t t2 = (int64_t)th * f;                      /* y eps^2 2^58 */
+    /* y eps + y eps^2 - 1/256, in 1/256 units */
+    int32_t c8 = zs_asr32(th, 5) + (int32_t)zs_asr64(t2, 50) - 1;
+    uint32_t rem;
+    y += (uint32_t)zs_asr32(c8, 8);
+    rem = 0u - d * y; /* 2^61 - d y mod 2^32, exact: it is below 2d < 2^32 */
+    return rem >= d ? y + 1u : y;
+}
+
+/* A frame's projection constants (zs_proj_init) for zs_project_fast. */
+struct zs_proj {
+    int64_t xk, yk;       /* 2^28 hw + 2^27 and 2^28 hh + 2^27 - 1: x and y's
+                             offset and rounding in one constant */
+    int32_t hw, nhh;      /* 8 * width and -8 * height (1/16 px) */
+    uint32_t near_z;      /* the camera's near, Q16 */
+    uint32_t ds_lo, ds_hi;/* priv.depth_scale's words (it is not 0) */
+};
+
+/* Number of left shifts that bring 0 < v < 2^31 into [2^30, 2^31); the
+ * shifted value in *norm. Cortex-M0 has no clz instruction (a libgcc call):
+ * there a binary search of five steps. */
+static inline unsigned zs_norm_shift(uint32_t v, uint32_t *norm)
+{
+#if defined(__GNUC__) && __SIZEOF_INT__ == 4 && !defined(__ARM_ARCH_6M__)
+    unsigned s = (unsigned)__builtin_clz(v) - 1u;
+    *norm = v << s;
+    return s;
+#else
+    unsigned s = 0, k;
+    for (k = 16; k > 0; k >>= 1)
+        if (v < ((uint32_t)1 << (31u - k))) {
+            v <<= k;
+            s += k;
+        }
+    *norm = v;
+    return s;
+#endif
+}
+
+/* a * b for |a| < 2^31, b <= 2^31. */
+static inline int64_t zs_mul_su32(int32_t a, uint32_t b)
+{
+#ifdef ZS_SPLIT_MUL
+    uint32_t ua = a < 0 ? 0u - (uint32_t)a : (uint32_t)a;
+    uint64_t p = zs_umul32(ua, b);
+    return a < 0 ? -(int64_t)p : (int64_t)p;
+#else
+    return (int64_t)a * (int64_t)b;
+#endif
+}
+
+/* a * b for any int32 a and |b| < 2^15: on Cortex-M0 two 32-bit products
+ * (a split at bit 16) instead of a call. */
+static inline int64_t zs_mul_32x16(int32_t a, int32_t b)
+{
+#ifdef ZS_SPLIT_MUL
+    int32_t hi = zs_asr32(a, 16), lo = (int32_t)((uint32_t)a & 0xFFFFu);
+    return (int64_t)(hi * b) * 65536 + lo * b;
+#else
+    return (int64_t)a * b;
+#endif
+}
+
+/* The low word of v / 2^k (1 <= k <= 31) from v's two words: no 64-bit shift
+ * (a libgcc call on Cortex-M0, a branch on k elsewhere). */
+static inline uint32_t zs_shr64_lo(uint64_t v, unsigned k)
+{
+    return ((uint32_t)v >> k) | ((uint32_t)(v >> 32) << (32u - k));
+}
+
+/* An int32 from its two's-complement bits (compilers emit nothing). */
+static inline int32_t zs_s32(uint32_t u)
+{
+    return u < 0x80000000u ? (int32_t)u : -(int32_t)~u - 1;
+}
+
+/* zs_project (setup.c), the same results, for a vertex with near <= w <= far,
+ * w < 2^29 and |xc|, |yc| <= 7 w (inside the guard band, or off it by a
+ * clipper's rounding) and below 2^31, when depth_scale is not 0: then xc / w
+ * in Q28 fits 32 bits, and so do the depth's words. With inside set the
+ * vertex is within the guard band, |xc|, |yc| <= guard * w: then x and y
+ * need no clamp, as |xc| * inv / 2^(33 - s) <= guard * 2^28 (inv <= 2^61 /
+ * (w 2^s)) puts x within hw +- guard * hw, inside +-(guard + 1) 8 width <=
+ * 32767 (the guard's definition, renderer.c), and y likewise. */
+static inline void zs_project_fast(const zs_proj *p, int32_t xc, int32_t yc, int32_t w,
+                                   zs_vert *v, int inside)
+{
+    uint32_t d, inv, q, m, zz;
+    unsigned s = zs_norm_shift((uint32_t)w, &d); /* 2..30 */
+    int32_t nx, ny, x, y;
+    uint64_t dz;
+#ifdef ZS_SPLIT_MUL
+    inv = zs_recip61(d);
+#else
+    inv = zs_recip61_fast(d);
+#endif
+    /* floor(xc * inv / 2^(33 - s)): xc / w in Q28 */
+    nx = zs_s32(zs_shr64_lo((uint64_t)zs_mul_su32(xc, inv), 33u - s));
+    ny = zs_s32(zs_shr64_lo((uint64_t)zs_mul_su32(yc, inv), 33u - s));
+    q = zs_shr64_lo(zs_umul32(p->near_z, inv), 31u - s); /* near / w, Q30, <= 2^30 */
+    m = 0x40000000u - q;
+    dz = zs_umul32(m, p->ds_lo) + ((uint64_t)(m * p->ds_hi) << 32);
+    zz = zs_shr64_lo(dz, 30); /* under 2^30 + 16 for w <= far */
+    x = (int32_t)zs_asr64(p->xk + zs_mul_32x16(nx, p->hw), 28);
+    y = (int32_t)zs_asr64(p->yk + zs_mul_32x16(ny, p->nhh), 28);
+    if (!inside) {
+        x = zs_clampi(x, -32767, 32767);
+        y = zs_clampi(y, -32767, 32767);
+    }
+    v->x = (int16_t)x;
+    v->y = (int16_t)y;
+    v->z = zz > 0x40000000u ? 0x40000000u : zz;
+}
+
+/* Built for size, one copy out of line (setup.c) serves zs_project and the
+ * draw loop; else inline in each. */
+#if defined(__OPTIMIZE_SIZE__)
+void zs_project_fast_out(const zs_proj *p, int32_t xc, int32_t yc, int32_t w, zs_vert *v,
+                         int inside);
+#define ZS_PROJECT_FAST zs_project_fast_out
+#else
+#define ZS_PROJECT_FAST zs_project_fast
+#endif
 
 /* ---- span fills (inline: they run once per span) ---- */
 #if defined(__GNUC__)

@@ -11,7 +11,12 @@
  *  - zs_isqrt64: exact floor: r*r <= v < (r+1)^2.
  *  - zs_recip61 (the projection's reciprocal): floor(2^61 / d) equal to the
  *    compiler's 64-bit division for every d in [2^30, 2^31) near the ends,
- *    near powers of two and 16-bit digit boundaries, and 2M random ones.
+ *    near powers of two, 16-bit digit boundaries and the rounding points of
+ *    its 32-bit division's divisor, and 2M random ones (all 2^30 were checked
+ *    once, outside the suite).
+ *  - zs_project / zs_project_fast: equal to the projection's arithmetic in
+ *    plain 64-bit operations (ref_project) for random screens, depth ranges
+ *    and vertices within the guard band and beyond it to 7 w.
  *  - zs_mat34_*: identity/translate/scale exact, mul and apply within 2 LSB of
  *    double math (exact saturation when the result leaves int32), rotations
  *    within the sine tolerance of the double rotation matrices.
@@ -272,8 +277,126 @@ static void test_recip61(void **state)
             check_recip61((hi << 16) | lo);
             check_recip61((hi << 16) | (0xFFFFu - lo));
         }
+    /* around the rounding points of the 32-bit division's divisor (d / 2^15
+     * rounded: odd multiples of 2^14), where its estimate is farthest off */
+    for (uint32_t hi = 0x8000u; hi < 0x10000u; hi++)
+        for (uint32_t lo = 0; lo < 3; lo++) {
+            check_recip61(hi * 0x8000u + 0x4000u - 1u - lo);
+            check_recip61(hi * 0x8000u + 0x4000u + lo);
+        }
     for (int k = 0; k < 2000000; k++)
         check_recip61(0x40000000u + zt_below(&g, 0x40000000u));
+}
+
+/* The projection's arithmetic (setup.c) in plain 64-bit operations, the
+ * reciprocal by the compiler's division: the reference for zs_project and
+ * zs_project_fast. For |xc|, |yc| <= 7 w and w < 2^31 every product fits. */
+static int64_t floor_shift(int64_t p, unsigned k)
+{
+    return p >= 0 ? p >> k : -((-p + ((int64_t)1 << k) - 1) >> k);
+}
+
+static int64_t clamp16(int64_t v)
+{
+    return v < -32767 ? -32767 : (v > 32767 ? 32767 : v);
+}
+
+static void ref_project(int32_t width, int32_t height, int32_t near_z, int64_t ds, int64_t xc,
+                        int64_t yc, int32_t w, int16_t *x, int16_t *y, uint32_t *z)
+{
+    unsigned s = 0;
+    while (((uint32_t)w << s) < 0x40000000u)
+        s++;
+    uint64_t inv = ((uint64_t)1 << 61) / ((uint32_t)w << s);
+    int64_t hw = 8 * (int64_t)width, hh = 8 * (int64_t)height;
+    int64_t nx = floor_shift(xc * (int64_t)inv, 33u - s);
+    int64_t ny = floor_shift(yc * (int64_t)inv, 33u - s);
+    int64_t q = (int64_t)(((uint64_t)near_z * inv) >> (31u - s));
+    int64_t zz = q >= ((int64_t)1 << 30) ? 0 : (int64_t)((((uint64_t)1 << 30) - (uint64_t)q) * (uint64_t)ds >> 30);
+    *x = (int16_t)clamp16(hw + floor_shift(nx * hw + ((int64_t)1 << 27), 28));
+    *y = (int16_t)clamp16(hh - floor_shift(ny * hh + ((int64_t)1 << 27), 28));
+    *z = (uint32_t)(zz > ((int64_t)1 << 30) ? ((int64_t)1 << 30) : zz);
+}
+
+/* zs_project_fast (the 32-bit projection of the draw loop) and zs_project
+ * against ref_project: random screens, depth ranges and vertices, inside the
+ * guard band (inside set: no clamps) and out to 7 w (clamped), w at near,
+ * far and powers of two, x and y at the band's edges. */
+static void test_project_fast(void **state)
+{
+    (void)state;
+    zt_rng g;
+    unsigned long bad = 0;
+    zt_rng_seed(&g, 0x9E0FA57000000001ull);
+    for (int k = 0; k < 400000; k++) {
+        zs_renderer r;
+        zs_proj p;
+        memset(&r, 0, sizeof r);
+        r.cfg.width = (uint16_t)zt_range(&g, 1, ZS_MAX_DIM);
+        r.cfg.height = (uint16_t)zt_range(&g, 1, ZS_MAX_DIM);
+        uint32_t dim = r.cfg.width > r.cfg.height ? r.cfg.width : r.cfg.height;
+        int32_t guard = (int32_t)(32767u / (8u * dim)) - 1;
+        guard = guard > ZS_GUARD_MAX ? ZS_GUARD_MAX : guard;
+        r.priv.guard = guard;
+        /* w up to 2^29 (where ref_project's products fit): zs_project's
+         * 64-bit path from 2^28, or for |xc| past 2^31 */
+        int32_t n = (int32_t)zt_range(&g, 1, (k & 1) ? 1 << 12 : 1 << 22);
+        int32_t f = (int32_t)zt_range(&g, n + 1, (k & 4) ? (1 << 29) - 1 : (1 << 24));
+        r.cam.near_z = n;
+        r.cam.far_z = f;
+        if (!((int64_t)f < 8 * ((int64_t)f - n)))
+            continue; /* depth_scale 0: zs_project's division */
+        r.priv.depth_scale = ((int64_t)f << 30) / ((int64_t)f - n);
+        zs_proj_init(&r, &p);
+        int32_t w;
+        switch (k % 5) {
+        case 0: w = n; break;
+        case 1: w = f; break;
+        case 2: {
+            int32_t e = 31 - __builtin_clz((uint32_t)f);
+            w = (int32_t)1 << zt_below(&g, (uint32_t)e + 1u);
+            if (w < n) w = n;
+            break;
+        }
+        default: w = (int32_t)zt_range(&g, n, f); break;
+        }
+        int in_band = (k & 2) != 0;
+        int64_t lim = in_band ? (int64_t)guard * w : 7 * (int64_t)w;
+        int64_t xc = (k % 11) == 3 ? lim : zt_range(&g, -lim, lim);
+        int64_t yc = (k % 13) == 4 ? -lim : zt_range(&g, -lim, lim);
+        int16_t rx, ry, gx, gy;
+        uint32_t rz, gz;
+        ref_project(r.cfg.width, r.cfg.height, n, r.priv.depth_scale, xc, yc, w, &rx, &ry, &rz);
+        zs_project(&r, xc, yc, w, &gx, &gy, &gz);
+        g_checks++;
+        if (gx != rx || gy != ry || gz != rz) {
+            if (bad++ < 5)
+                ZT_CHECK(0, "zs_project w=%ld xc=%lld yc=%lld: (%d,%d,%lu) want (%d,%d,%lu)",
+                         (long)w, (long long)xc, (long long)yc, gx, gy, (unsigned long)gz, rx, ry,
+                         (unsigned long)rz);
+        }
+        if (xc <= INT32_MAX && xc >= -INT32_MAX && yc <= INT32_MAX && yc >= -INT32_MAX) {
+            zs_vert v;
+            zs_project_fast(&p, (int32_t)xc, (int32_t)yc, w, &v, 0);
+            if (v.x != rx || v.y != ry || v.z != rz) {
+                if (bad++ < 5)
+                    ZT_CHECK(0, "zs_project_fast w=%ld xc=%lld yc=%lld: (%d,%d,%lu) want (%d,%d,%lu)",
+                             (long)w, (long long)xc, (long long)yc, v.x, v.y, (unsigned long)v.z,
+                             rx, ry, (unsigned long)rz);
+            }
+            if (in_band) {
+                zs_project_fast(&p, (int32_t)xc, (int32_t)yc, w, &v, 1);
+                if (v.x != rx || v.y != ry || v.z != rz) {
+                    if (bad++ < 5)
+                        ZT_CHECK(0, "zs_project_fast (inside) w=%ld xc=%lld yc=%lld: (%d,%d,%lu) "
+                                    "want (%d,%d,%lu)",
+                                 (long)w, (long long)xc, (long long)yc, v.x, v.y,
+                                 (unsigned long)v.z, rx, ry, (unsigned long)rz);
+                }
+            }
+        }
+    }
+    ZT_CHECK(bad == 0, "%lu projections differ", bad);
 }
 
 static void check_udiv(uint32_t nh, uint32_t nl, uint32_t v)
@@ -574,6 +697,7 @@ int main(void)
         cmocka_unit_test(test_sincos),       cmocka_unit_test(test_isqrt),
         cmocka_unit_test(test_mat_basic),    cmocka_unit_test(test_mat_mul_apply),
         cmocka_unit_test(test_mat_rotate),   cmocka_unit_test(test_recip61), cmocka_unit_test(test_udiv64_32),
+        cmocka_unit_test(test_project_fast),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     printf("test_fixed: seed %llx, %lu value checks, max sin/cos error %.2f LSB (tol %d, quadrants "

@@ -46,6 +46,11 @@ void zs_raster_begin(zs_renderer *r)
     r->priv.row_fn = r->priv.mode == ZS_MODE_ZLINE      ? zs_zline_row
                      : r->priv.mode == ZS_MODE_PRIORITY ? zs_priority_row
                                                         : zs_span_row;
+    if (r->priv.sort_keys) { /* merge_columns' lists: all empty */
+        uint16_t *head = (uint16_t *)(void *)r->priv.sort_keys;
+        for (i = 0; i <= r->cfg.width; i++)
+            head[i] = ZS_NONE;
+    }
     reverse_buckets(r);
 }
 
@@ -143,6 +148,80 @@ static void sort_batch(zs_renderer *r, uint16_t *a, int n)
         a[i] = (uint16_t)(key[i] & 0xFFFFu);
 }
 
+/* Folds, sorts and merges the unsorted tail ael[sorted, n) in one pass over
+ * it and one over the columns it reaches, in the edge scratch (sort_keys, 8
+ * bytes a column): head[c], c in [0, width], lists the tail's edges at column
+ * c clamped to the screen, linked through their pad fields (every head is
+ * ZS_NONE between rows); cols[] holds the columns with a list. No per-row
+ * sort: the lists are the columns' order, and a shared edge meets its twin in
+ * its column's list. Returns the list's new length. */
+static int merge_columns(zs_renderer *r, int sorted, int n)
+{
+    uint16_t *const ael = r->priv.ael;
+    zs_edge *const edges = r->priv.edges;
+    uint16_t *const head = (uint16_t *)(void *)r->priv.sort_keys;
+    const int32_t w = (int32_t)r->cfg.width;
+    uint16_t *const cols = head + w + 1;
+    int32_t lo = w, hi = 0;
+    int i, k, g, ng = 0, nb = 0;
+    for (i = sorted; i < n; i++) {
+        const uint16_t ei = ael[i];
+        zs_edge *const e = &edges[ei];
+        const int32_t x = e->x;
+        const int32_t c = zs_clampi(x, 0, w);
+        uint16_t h = head[c];
+        if (h == ZS_NONE) {
+            cols[ng++] = (uint16_t)c;
+            lo = c < lo ? c : lo;
+            hi = c > hi ? c : hi;
+        } else if (c == x) {
+            /* twins start at the same column; off the screen they are
+             * left apart (a column's list there may be long, and the walk
+             * treats them all as at its edge) */
+            for (; h != ZS_NONE; h = edges[h].pad)
+                if (edges[h].x == x && fold_edge(r, &edges[h], h, e)) {
+                    r->priv.edge_free[r->priv.n_edge_free++] = ei;
+                    goto folded;
+                }
+            h = head[c];
+        }
+        e->pad = h;
+        head[c] = ei;
+        nb++;
+    folded:;
+    }
+    /* columns from the right: a few sorted by insertion, many walked */
+    if ((uint32_t)ng * (uint32_t)ng > 4u * (uint32_t)(hi - lo + 1)) {
+        ng = 0;
+        for (k = hi; k >= lo; k--)
+            if (head[k] != ZS_NONE)
+                cols[ng++] = (uint16_t)k;
+    } else {
+        for (g = 1; g < ng; g++) {
+            uint16_t c = cols[g];
+            for (k = g; k > 0 && cols[k - 1] < c; k--)
+                cols[k] = cols[k - 1];
+            cols[k] = c;
+        }
+    }
+    /* merge from the back: each new edge after the old ones right of it
+     * (the list has room; the tail is read from the lists only) */
+    i = sorted - 1;
+    k = sorted + nb - 1;
+    for (g = 0; g < ng; g++) {
+        const uint16_t c = cols[g];
+        uint16_t b = head[c];
+        head[c] = ZS_NONE;
+        for (; b != ZS_NONE; b = edges[b].pad) {
+            const int32_t bx = edges[b].x;
+            while (i >= 0 && edges[ael[i]].x > bx)
+                ael[k--] = ael[i--];
+            ael[k--] = b;
+        }
+    }
+    return sorted + nb;
+}
+
 /* Activates the triangles first met on row y; sorts, folds and merges the
  * unsorted tail (those edges plus continuations made by the last step). */
 static void add_new_edges(zs_renderer *r, int32_t y)
@@ -159,6 +238,13 @@ static void add_new_edges(zs_renderer *r, int32_t y)
     n = r->priv.n_ael;
     if (n == sorted)
         return;
+    if (r->priv.sort_keys) {
+        n = merge_columns(r, sorted, n);
+        r->priv.n_ael = (uint16_t)n;
+        r->priv.n_sorted = (uint16_t)n;
+        return;
+    }
+    /* without the scratch (ZS_CFG_NO_ZLINE): sort by insertion, fold, merge */
     sort_batch(r, ael + sorted, n - sorted);
     /* fold shared edges: they start at the same column */
     w = sorted;

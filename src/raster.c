@@ -58,7 +58,7 @@ void zs_raster_begin(zs_renderer *r)
  * and the other starting one: keep one record for both. Every pool edge is
  * owned by at least one triangle side, so the pool never holds more edges
  * than twice the active triangles. */
-static int fold_edge(zs_renderer *r, zs_edge *keep, uint16_t keep_i, zs_edge *dup)
+static ZS_INLINE_ALWAYS int fold_edge(zs_renderer *r, zs_edge *keep, uint16_t keep_i, zs_edge *dup)
 {
     zs_active *act = r->priv.active;
     if (keep->err != dup->err || keep->step != dup->step || keep->rstep != dup->rstep ||

@@ -189,12 +189,50 @@ void zs_anchor_depth(const zs_renderer *r, const zs_active *a, zs_active_plane *
 }
 
 /* Takes an edge from the pool for a -> b, owned by ai on one side, and
- * appends it to the list's unsorted tail. */
+ * appends it to the list's unsorted tail. Where the row's batch already has
+ * an edge from the same two vertices with that side free (the neighbour
+ * across a shared edge), that record serves both: the fold merge_columns
+ * would make, without making and sorting the twin. */
 static uint16_t new_edge(zs_renderer *r, uint16_t ai, int left_side, const zs_vert *a,
                          const zs_vert *b, int32_t y)
 {
-    uint16_t ei = r->priv.edge_free[--r->priv.n_edge_free];
-    zs_edge *e = &r->priv.edges[ei];
+    zs_edge *const edges = r->priv.edges;
+    const unsigned shift = r->priv.twin_shift;
+    uint32_t *const keys = r->priv.sort_keys;
+    uint16_t *vals = 0;
+    uint32_t key = 0, h = 0;
+    uint16_t ei;
+    zs_edge *e;
+    if (shift) {
+        const uint32_t mask = 0xFFFFFFFFu >> shift;
+        int p;
+        vals = (uint16_t *)(void *)(keys + mask + 1u);
+        key = (uint32_t)(a - r->priv.verts) << 16 | (uint32_t)(b - r->priv.verts);
+        h = (key * 0x9E3779B1u) >> shift;
+        for (p = 0; p < ZS_TWIN_PROBES; p++, h = (h + 1u) & mask) {
+            const uint32_t k = keys[h];
+            if (k == ZS_TWIN_EMPTY)
+                break;
+            if (k == key) {
+                ei = vals[h];
+                e = &edges[ei];
+                if (left_side) {
+                    if (e->lead == ZS_NONE) {
+                        e->lead = ai;
+                        return ei;
+                    }
+                } else if (e->trail == ZS_NONE) {
+                    e->trail = ai;
+                    r->priv.active[ai].right = ei;
+                    return ei;
+                }
+            }
+        }
+        if (p == ZS_TWIN_PROBES)
+            vals = 0; /* no room near: this one is not listed */
+    }
+    ei = r->priv.edge_free[--r->priv.n_edge_free];
+    e = &edges[ei];
     edge_init(e, a, b, y);
     e->lead = left_side ? ai : (uint16_t)ZS_NONE;
     e->trail = left_side ? (uint16_t)ZS_NONE : ai;
@@ -202,6 +240,10 @@ static uint16_t new_edge(zs_renderer *r, uint16_t ai, int left_side, const zs_ve
     r->priv.ael[r->priv.n_ael++] = ei;
     if (!left_side)
         r->priv.active[ai].right = ei;
+    if (vals) {
+        keys[h] = key;
+        vals[h] = ei;
+    }
     return ei;
 }
 

@@ -677,6 +677,8 @@ typedef struct zs_renderer_private {
     uint16_t others_lo;               /* span walk: least depth bound of the rest */
     uint8_t state, mode, bpp;
     uint8_t steep;                    /* a steep plane is active this frame */
+    uint8_t twin_shift;               /* raster: 32 - log2 of the twin table's size, 0
+                                         for none (src/zs_internal.h) */
     uint8_t out_format;               /* the format asked for; shade.format is the
                                          scratch line's (GRAY8, ID16) for 1-bit ones */
     uint8_t line_keep;                /* a hidden-line frame: records of the triangles

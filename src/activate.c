@@ -199,22 +199,21 @@ static uint16_t new_edge(zs_renderer *r, uint16_t ai, int left_side, const zs_ve
     zs_edge *const edges = r->priv.edges;
     const unsigned shift = r->priv.twin_shift;
     uint32_t *const keys = r->priv.sort_keys;
-    uint16_t *vals = 0;
-    uint32_t key = 0, h = 0;
+    uint32_t key = 0, h = 0, mask = 0;
+    int listed = 0;
     uint16_t ei;
     zs_edge *e;
     if (shift) {
-        const uint32_t mask = 0xFFFFFFFFu >> shift;
+        /* the vertices' byte offsets in the pool (multiples of 8, < 2^19) */
+        const char *pool = (const char *)r->priv.verts;
         int p;
-        vals = (uint16_t *)(void *)(keys + mask + 1u);
-        key = (uint32_t)(a - r->priv.verts) << 16 | (uint32_t)(b - r->priv.verts);
+        mask = 0xFFFFFFFFu >> shift;
+        key = (uint32_t)((const char *)a - pool) << 13 | (uint32_t)((const char *)b - pool) >> 3;
         h = (key * 0x9E3779B1u) >> shift;
-        for (p = 0; p < ZS_TWIN_PROBES; p++, h = (h + 1u) & mask) {
+        for (p = ZS_TWIN_PROBES; p > 0; p--, h = (h + 1u) & mask) {
             const uint32_t k = keys[h];
-            if (k == ZS_TWIN_EMPTY)
-                break;
             if (k == key) {
-                ei = vals[h];
+                ei = ((const uint16_t *)(const void *)(keys + mask + 1u))[h];
                 e = &edges[ei];
                 if (left_side) {
                     if (e->lead == ZS_NONE) {
@@ -226,10 +225,11 @@ static uint16_t new_edge(zs_renderer *r, uint16_t ai, int left_side, const zs_ve
                     r->priv.active[ai].right = ei;
                     return ei;
                 }
+            } else if (k == ZS_TWIN_EMPTY) {
+                listed = 1; /* else no room near: not listed */
+                break;
             }
         }
-        if (p == ZS_TWIN_PROBES)
-            vals = 0; /* no room near: this one is not listed */
     }
     ei = r->priv.edge_free[--r->priv.n_edge_free];
     e = &edges[ei];
@@ -240,9 +240,9 @@ static uint16_t new_edge(zs_renderer *r, uint16_t ai, int left_side, const zs_ve
     r->priv.ael[r->priv.n_ael++] = ei;
     if (!left_side)
         r->priv.active[ai].right = ei;
-    if (vals) {
+    if (listed) {
         keys[h] = key;
-        vals[h] = ei;
+        ((uint16_t *)(void *)(keys + mask + 1u))[h] = ei;
     }
     return ei;
 }

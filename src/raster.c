@@ -174,15 +174,25 @@ static int merge_columns(zs_renderer *r, int sorted, int n)
      * (the list has room; the tail is read from the lists only) */
     i = sorted - 1;
     k = sorted + nb - 1;
-    for (g = 0; g < ng; g++) {
-        const uint16_t c = cols[g];
-        uint16_t b = head[c];
-        head[c] = ZS_NONE;
-        for (; b != ZS_NONE; b = edges[b].pad) {
-            const int32_t bx = edges[b].x;
-            while (i >= 0 && edges[ael[i]].x > bx)
-                ael[k--] = ael[i--];
-            ael[k--] = b;
+    {
+        /* the leftmost old edge stops every scan that starts at or right of
+         * it: no bound test in the moving loop */
+        const int32_t x0 = sorted > 0 ? edges[ael[0]].x : INT32_MAX;
+        for (g = 0; g < ng; g++) {
+            const uint16_t c = cols[g];
+            uint16_t b = head[c];
+            head[c] = ZS_NONE;
+            for (; b != ZS_NONE; b = edges[b].pad) {
+                const int32_t bx = edges[b].x;
+                if (bx >= x0) {
+                    while (edges[ael[i]].x > bx)
+                        ael[k--] = ael[i--];
+                } else {
+                    for (; i >= 0; i--)
+                        ael[k--] = ael[i];
+                }
+                ael[k--] = b;
+            }
         }
     }
     return sorted + nb;

@@ -192,9 +192,10 @@ void zs_anchor_depth(const zs_renderer *r, const zs_active *a, zs_active_plane *
  * appends it to the list's unsorted tail. Where the row's batch already has
  * an edge from the same two vertices with that side free (the neighbour
  * across a shared edge), that record serves both: the fold merge_columns
- * would make, without making and sorting the twin. */
-static uint16_t new_edge(zs_renderer *r, uint16_t ai, int left_side, const zs_vert *a,
-                         const zs_vert *b, int32_t y)
+ * would make, without making and sorting the twin. Inline: its arguments
+ * stay in registers. */
+static ZS_INLINE_ALWAYS uint16_t new_edge(zs_renderer *r, uint16_t ai, int left_side,
+                                          const zs_vert *a, const zs_vert *b, int32_t y)
 {
     zs_edge *const edges = r->priv.edges;
     const unsigned shift = r->priv.twin_shift;

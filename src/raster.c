@@ -176,7 +176,8 @@ static int merge_columns(zs_renderer *r, int sorted, int n)
     k = sorted + nb - 1;
     {
         /* the leftmost old edge stops every scan that starts at or right of
-         * it: no bound test in the moving loop */
+         * it: no bound test in the moving loop (unless all have moved: a
+         * list off the screen is in no order of x) */
         const int32_t x0 = sorted > 0 ? edges[ael[0]].x : INT32_MAX;
         for (g = 0; g < ng; g++) {
             const uint16_t c = cols[g];
@@ -184,7 +185,7 @@ static int merge_columns(zs_renderer *r, int sorted, int n)
             head[c] = ZS_NONE;
             for (; b != ZS_NONE; b = edges[b].pad) {
                 const int32_t bx = edges[b].x;
-                if (bx >= x0) {
+                if (bx >= x0 && i >= 0) {
                     while (edges[ael[i]].x > bx)
                         ael[k--] = ael[i--];
                 } else {

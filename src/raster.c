@@ -310,8 +310,8 @@ static void step_edges(zs_renderer *r, int32_t y)
     const int32_t next = y + 1;
     int i, kept = 0, n_cont = 0;
     int32_t prev_x = INT32_MIN;
-    /* up to the first edge that retires or moves back, every edge stays where
-     * it is: only stepped */
+    /* up to the first edge that retires, every edge keeps its place or moves
+     * back among those before it: the list is rewritten only there */
     for (i = 0; i < n; i++) {
         zs_edge *const e = &edges[ael[i]];
         int32_t x, err;
@@ -325,21 +325,17 @@ static void step_edges(zs_renderer *r, int32_t y)
         }
         e->x = x;
         e->err = err;
-        if (x < prev_x)
-            break;
-        prev_x = x;
+        if (x >= prev_x) {
+            prev_x = x;
+        } else {
+            const uint16_t ei = ael[i];
+            int j = i;
+            for (; j > 0 && edges[ael[j - 1]].x > x; j--)
+                ael[j] = ael[j - 1];
+            ael[j] = ei;
+        }
     }
     kept = i;
-    if (i < n && next < edges[ael[i]].y_end) { /* stepped, but moves back */
-        const uint16_t ei = ael[i];
-        const int32_t x = edges[ei].x;
-        int j = kept;
-        for (; j > 0 && edges[ael[j - 1]].x > x; j--)
-            ael[j] = ael[j - 1];
-        ael[j] = ei;
-        kept++;
-        i++;
-    }
     for (; i < n; i++) {
         const uint16_t ei = ael[i];
         zs_edge *const e = &edges[ei];

@@ -194,8 +194,13 @@ void zs_anchor_depth(const zs_renderer *r, const zs_active *a, zs_active_plane *
  * across a shared edge), that record serves both: the fold merge_columns
  * would make, without making and sorting the twin. Inline: its arguments
  * stay in registers. */
-static ZS_INLINE_ALWAYS uint16_t new_edge(zs_renderer *r, uint16_t ai, int left_side,
-                                          const zs_vert *a, const zs_vert *b, int32_t y)
+#if defined(__OPTIMIZE_SIZE__)
+#define ZS_NEW_EDGE_INLINE /* one copy where size counts */
+#else
+#define ZS_NEW_EDGE_INLINE ZS_INLINE_ALWAYS
+#endif
+static ZS_NEW_EDGE_INLINE uint16_t new_edge(zs_renderer *r, uint16_t ai, int left_side,
+                                            const zs_vert *a, const zs_vert *b, int32_t y)
 {
     zs_edge *const edges = r->priv.edges;
     const unsigned shift = r->priv.twin_shift;

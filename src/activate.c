@@ -8,6 +8,14 @@
  * gives both its triangles the same boundary and nothing cracks. */
 #include "zs_internal.h"
 
+/* Inline where speed counts (the arguments stay in registers); one copy in
+ * builds for size. */
+#if defined(__OPTIMIZE_SIZE__)
+#define ZS_HOT_INLINE
+#else
+#define ZS_HOT_INLINE ZS_INLINE_ALWAYS
+#endif
+
 /* Sets e to cover the edge a -> b (a above b) starting at row y. */
 static void edge_init(zs_edge *e, const zs_vert *a, const zs_vert *b, int32_t y)
 {
@@ -146,7 +154,8 @@ static void depth_range(zs_active *a, const zs_vert *s[3])
 /* The triangle's vertices in a canonical order: by y, then by x. Two
  * vertices of a stored triangle never share both, so equal triangles get
  * equal edges and equal planes however their vertices were rotated. */
-static void sort_canonical(const zs_renderer *r, const zs_tri *t, const zs_vert *v[3])
+static ZS_HOT_INLINE void sort_canonical(const zs_renderer *r, const zs_tri *t,
+                                         const zs_vert *v[3])
 {
     const zs_vert *pool = r->priv.verts, *tmp;
     v[0] = &pool[t->v[0]];
@@ -192,15 +201,9 @@ void zs_anchor_depth(const zs_renderer *r, const zs_active *a, zs_active_plane *
  * appends it to the list's unsorted tail. Where the row's batch already has
  * an edge from the same two vertices with that side free (the neighbour
  * across a shared edge), that record serves both: the fold merge_columns
- * would make, without making and sorting the twin. Inline: its arguments
- * stay in registers. */
-#if defined(__OPTIMIZE_SIZE__)
-#define ZS_NEW_EDGE_INLINE /* one copy where size counts */
-#else
-#define ZS_NEW_EDGE_INLINE ZS_INLINE_ALWAYS
-#endif
-static ZS_NEW_EDGE_INLINE uint16_t new_edge(zs_renderer *r, uint16_t ai, int left_side,
-                                            const zs_vert *a, const zs_vert *b, int32_t y)
+ * would make, without making and sorting the twin. */
+static ZS_HOT_INLINE uint16_t new_edge(zs_renderer *r, uint16_t ai, int left_side,
+                                       const zs_vert *a, const zs_vert *b, int32_t y)
 {
     zs_edge *const edges = r->priv.edges;
     const unsigned shift = r->priv.twin_shift;

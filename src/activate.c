@@ -8,6 +8,14 @@
  * gives both its triangles the same boundary and nothing cracks. */
 #include "zs_internal.h"
 
+/* Inline where speed counts (the arguments stay in registers); one copy in
+ * builds for size. */
+#if defined(__OPTIMIZE_SIZE__)
+#define ZS_HOT_INLINE
+#else
+#define ZS_HOT_INLINE ZS_INLINE_ALWAYS
+#endif
+
 /* Sets e to cover the edge a -> b (a above b) starting at row y. */
 static void edge_init(zs_edge *e, const zs_vert *a, const zs_vert *b, int32_t y)
 {
@@ -146,7 +154,8 @@ static void depth_range(zs_active *a, const zs_vert *s[3])
 /* The triangle's vertices in a canonical order: by y, then by x. Two
  * vertices of a stored triangle never share both, so equal triangles get
  * equal edges and equal planes however their vertices were rotated. */
-static void sort_canonical(const zs_renderer *r, const zs_tri *t, const zs_vert *v[3])
+static ZS_HOT_INLINE void sort_canonical(const zs_renderer *r, const zs_tri *t,
+                                         const zs_vert *v[3])
 {
     const zs_vert *pool = r->priv.verts, *tmp;
     v[0] = &pool[t->v[0]];
@@ -189,12 +198,50 @@ void zs_anchor_depth(const zs_renderer *r, const zs_active *a, zs_active_plane *
 }
 
 /* Takes an edge from the pool for a -> b, owned by ai on one side, and
- * appends it to the list's unsorted tail. */
-static uint16_t new_edge(zs_renderer *r, uint16_t ai, int left_side, const zs_vert *a,
-                         const zs_vert *b, int32_t y)
+ * appends it to the list's unsorted tail. Where the row's batch already has
+ * an edge from the same two vertices with that side free (the neighbour
+ * across a shared edge), that record serves both: the fold merge_columns
+ * would make, without making and sorting the twin. */
+static ZS_HOT_INLINE uint16_t new_edge(zs_renderer *r, uint16_t ai, int left_side,
+                                       const zs_vert *a, const zs_vert *b, int32_t y)
 {
-    uint16_t ei = r->priv.edge_free[--r->priv.n_edge_free];
-    zs_edge *e = &r->priv.edges[ei];
+    zs_edge *const edges = r->priv.edges;
+    const unsigned shift = r->priv.twin_shift;
+    uint32_t *const keys = r->priv.sort_keys;
+    uint32_t key = 0, h = 0, mask = 0;
+    int listed = 0;
+    uint16_t ei;
+    zs_edge *e;
+    if (shift) {
+        /* the vertices' byte offsets in the pool (multiples of 8, < 2^19) */
+        const char *pool = (const char *)r->priv.verts;
+        int p;
+        mask = 0xFFFFFFFFu >> shift;
+        key = (uint32_t)((const char *)a - pool) << 13 | (uint32_t)((const char *)b - pool) >> 3;
+        h = (key * 0x9E3779B1u) >> shift;
+        for (p = ZS_TWIN_PROBES; p > 0; p--, h = (h + 1u) & mask) {
+            const uint32_t k = keys[h];
+            if (k == key) {
+                ei = ((const uint16_t *)(const void *)(keys + mask + 1u))[h];
+                e = &edges[ei];
+                if (left_side) {
+                    if (e->lead == ZS_NONE) {
+                        e->lead = ai;
+                        return ei;
+                    }
+                } else if (e->trail == ZS_NONE) {
+                    e->trail = ai;
+                    r->priv.active[ai].right = ei;
+                    return ei;
+                }
+            } else if (k == ZS_TWIN_EMPTY) {
+                listed = 1; /* else no room near: not listed */
+                break;
+            }
+        }
+    }
+    ei = r->priv.edge_free[--r->priv.n_edge_free];
+    e = &edges[ei];
     edge_init(e, a, b, y);
     e->lead = left_side ? ai : (uint16_t)ZS_NONE;
     e->trail = left_side ? (uint16_t)ZS_NONE : ai;
@@ -202,6 +249,10 @@ static uint16_t new_edge(zs_renderer *r, uint16_t ai, int left_side, const zs_ve
     r->priv.ael[r->priv.n_ael++] = ei;
     if (!left_side)
         r->priv.active[ai].right = ei;
+    if (listed) {
+        keys[h] = key;
+        ((uint16_t *)(void *)(keys + mask + 1u))[h] = ei;
+    }
     return ei;
 }
 
@@ -215,6 +266,7 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     int64_t cross;
     zs_recip area2;
     int long_left, plane_made = 0; /* area2 holds the area's reciprocal */
+    int32_t ox, oy;
     if (r->priv.n_active_free < 1 || r->priv.n_edge_free < 2) {
         r->stats.records_skipped++; /* capacity policy: the triangle is skipped */
         return 0;
@@ -260,14 +312,22 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     /* colours in submission order (per-vertex shades follow t->v); the
      * record's area is negative in that order (a front face). Only colour
      * planes need the area's reciprocal here where no plane was made. */
-    v[0] = &pool[t->v[0]];
-    v[1] = &pool[t->v[1]];
-    v[2] = &pool[t->v[2]];
-    if (!plane_made && (t->color >> 24) != 0 && r->priv.vshade)
-        zs_recip_init(&area2, cross);
+    if ((t->color >> 24) != 0 && r->priv.vshade) {
+        v[0] = &pool[t->v[0]];
+        v[1] = &pool[t->v[1]];
+        v[2] = &pool[t->v[2]];
+        if (!plane_made)
+            zs_recip_init(&area2, cross);
+        ox = zs_asr32(v[0]->x, 4);
+        oy = zs_asr32(v[0]->y, 4);
+    } else { /* one colour: zs_shade_setup reads neither vertices nor origin */
+        v[0] = s[0];
+        v[1] = s[1];
+        v[2] = s[2];
+        ox = oy = 0;
+    }
     area2.neg = 1;
-    zs_shade_setup(r, a, r->priv.acolor ? &r->priv.acolor[ai] : 0, t, v,
-                   zs_asr32(v[0]->x, 4), zs_asr32(v[0]->y, 4), &area2, y);
+    zs_shade_setup(r, a, r->priv.acolor ? &r->priv.acolor[ai] : 0, t, v, ox, oy, &area2, y);
     r->stats.tris_drawn++;
     return 1;
 }

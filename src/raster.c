@@ -25,6 +25,27 @@ static void reverse_buckets(zs_renderer *r)
     }
 }
 
+/* Empties the twin table (zs_internal.h): after each batch is merged, so
+ * twins are only found among edges made for the same row. */
+static void clear_twins(zs_renderer *r)
+{
+    const uint32_t n = zs_twin_slots(r->priv.twin_shift); /* 0 or a multiple of 16 */
+#ifdef ZS_WORD_STORES
+    if (n)
+        zs_store_blocks((zs_word_alias *)(void *)r->priv.sort_keys, n / 4u, ZS_TWIN_EMPTY);
+#else
+    uint32_t i;
+    for (i = 0; i < n; i++)
+        r->priv.sort_keys[i] = ZS_TWIN_EMPTY;
+#endif
+}
+
+/* merge_columns' lists, after the twin table */
+static uint16_t *column_heads(const zs_renderer *r)
+{
+    return (uint16_t *)(void *)r->priv.sort_keys + 3u * zs_twin_slots(r->priv.twin_shift);
+}
+
 void zs_raster_begin(zs_renderer *r)
 {
     uint16_t *efree = r->priv.edge_free;
@@ -46,6 +67,13 @@ void zs_raster_begin(zs_renderer *r)
     r->priv.row_fn = ZS_HAS_ZLINE && r->priv.mode == ZS_MODE_ZLINE         ? zs_zline_row
                      : ZS_HAS_PRIORITY && r->priv.mode == ZS_MODE_PRIORITY ? zs_priority_row
                                                                            : zs_span_row;
+    r->priv.twin_shift = (uint8_t)(r->priv.sort_keys ? zs_twin_shift(r->cfg.width) : 0u);
+    if (r->priv.sort_keys) { /* merge_columns' lists and the twin table: all empty */
+        uint16_t *head = column_heads(r);
+        for (i = 0; i <= r->cfg.width; i++)
+            head[i] = ZS_NONE;
+        clear_twins(r);
+    }
     reverse_buckets(r);
 }
 
@@ -53,7 +81,7 @@ void zs_raster_begin(zs_renderer *r)
  * and the other starting one: keep one record for both. Every pool edge is
  * owned by at least one triangle side, so the pool never holds more edges
  * than twice the active triangles. */
-static int fold_edge(zs_renderer *r, zs_edge *keep, uint16_t keep_i, zs_edge *dup)
+static ZS_INLINE_ALWAYS int fold_edge(zs_renderer *r, zs_edge *keep, uint16_t keep_i, zs_edge *dup)
 {
     zs_active *act = r->priv.active;
     if (keep->err != dup->err || keep->step != dup->step || keep->rstep != dup->rstep ||
@@ -71,76 +99,104 @@ static int fold_edge(zs_renderer *r, zs_edge *keep, uint16_t keep_i, zs_edge *du
     return 1;
 }
 
-/* Sorts edge indices by column clamped to the screen, by counting over the
- * columns the batch spans (one pass over them instead of log n passes over
- * the edges): cheaper than comparison sorts past a dozen or so. Edges off either side keep their batch order
- * among themselves: the walk treats them as at column 0 or at the width, and
- * the next step's insertion pass puts them back in order of their true
- * columns. Counts, output and columns use the sort keys' scratch (8 bytes a
- * column): 2 * (width + 2) + 4 * n bytes for n <= width. */
-static void count_sort(zs_renderer *r, uint16_t *a, int n)
-{
-    const zs_edge *edges = r->priv.edges;
-    const int32_t w = (int32_t)r->cfg.width;
-    uint16_t *count = (uint16_t *)(void *)r->priv.sort_keys, *out = count + w + 2;
-    uint16_t *col = out + n; /* each edge's clamped column, read once */
-    int32_t c, lo = w, hi = 0, span;
-    int i;
-    for (i = 0; i < n; i++) {
-        int32_t x = zs_clampi(edges[a[i]].x, 0, w);
-        col[i] = (uint16_t)x;
-        lo = x < lo ? x : lo;
-        hi = x > hi ? x : hi;
-    }
-    /* count over the columns the batch spans only (a small model is narrow) */
-    span = hi - lo + 1;
-    memset(count, 0, (size_t)(span + 1) * sizeof *count);
-    for (i = 0; i < n; i++)
-        count[col[i] - lo + 1]++;
-    for (c = 1; c < span; c++)
-        count[c] = (uint16_t)(count[c] + count[c - 1]);
-    for (i = 0; i < n; i++)
-        out[count[col[i] - lo]++] = a[i];
-    memcpy(a, out, (size_t)n * sizeof *a);
-}
-
-/* Sorts edge indices by column, in the z-buffer line's storage (idle while
- * edges are added): insertion on (column, index) keys packed into 32-bit
- * words for a few, counting for more; without that scratch (ZS_CFG_NO_ZLINE)
- * insertion on the indices. */
+/* Sorts edge indices by column: insertion (merge_columns' fallback without
+ * the scratch, ZS_CFG_NO_ZLINE). */
 static void sort_batch(zs_renderer *r, uint16_t *a, int n)
 {
     const zs_edge *edges = r->priv.edges;
-    uint32_t *key = r->priv.sort_keys;
     int i, j;
-    if (n < 2)
-        return;
-    if (!key || n > (int)r->cfg.width) { /* no scratch, or more than it holds */
-        for (i = 1; i < n; i++) {
-            uint16_t e = a[i];
-            int32_t x = edges[e].x;
-            for (j = i; j > 0 && edges[a[j - 1]].x > x; j--)
-                a[j] = a[j - 1];
-            a[j] = e;
-        }
-        return;
-    }
-    if (n > 16) {
-        count_sort(r, a, n);
-        return;
-    }
-    /* a few: insertion on keys; columns are within +-2^14 of the screen, an
-     * offset makes them unsigned */
-    for (i = 0; i < n; i++)
-        key[i] = ((uint32_t)(edges[a[i]].x + 32768) << 16) | a[i];
     for (i = 1; i < n; i++) {
-        uint32_t k = key[i];
-        for (j = i; j > 0 && key[j - 1] > k; j--)
-            key[j] = key[j - 1];
-        key[j] = k;
+        uint16_t e = a[i];
+        int32_t x = edges[e].x;
+        for (j = i; j > 0 && edges[a[j - 1]].x > x; j--)
+            a[j] = a[j - 1];
+        a[j] = e;
     }
-    for (i = 0; i < n; i++)
-        a[i] = (uint16_t)(key[i] & 0xFFFFu);
+}
+
+/* Folds, sorts and merges the unsorted tail ael[sorted, n) in one pass over
+ * it and one over the columns it reaches, in the edge scratch (sort_keys, 8
+ * bytes a column): head[c], c in [0, width], lists the tail's edges at column
+ * c clamped to the screen, linked through their pad fields (every head is
+ * ZS_NONE between rows); cols[] holds the columns with a list. No per-row
+ * sort: the lists are the columns' order, and a shared edge meets its twin in
+ * its column's list. Returns the list's new length. */
+static int merge_columns(zs_renderer *r, int sorted, int n)
+{
+    uint16_t *const ael = r->priv.ael;
+    zs_edge *const edges = r->priv.edges;
+    uint16_t *const head = column_heads(r);
+    const int32_t w = (int32_t)r->cfg.width;
+    uint16_t *const cols = head + w + 1;
+    int32_t lo = w, hi = 0;
+    int i, k, g, ng = 0, nb = 0;
+    for (i = sorted; i < n; i++) {
+        const uint16_t ei = ael[i];
+        zs_edge *const e = &edges[ei];
+        const int32_t x = e->x;
+        const int32_t c = zs_clampi(x, 0, w);
+        uint16_t h = head[c];
+        if (h == ZS_NONE) {
+            cols[ng++] = (uint16_t)c;
+            lo = c < lo ? c : lo;
+            hi = c > hi ? c : hi;
+        } else if (c == x) {
+            /* twins start at the same column; off the screen they are
+             * left apart (a column's list there may be long, and the walk
+             * treats them all as at its edge) */
+            for (; h != ZS_NONE; h = edges[h].pad)
+                if (edges[h].x == x && fold_edge(r, &edges[h], h, e)) {
+                    r->priv.edge_free[r->priv.n_edge_free++] = ei;
+                    goto folded;
+                }
+            h = head[c];
+        }
+        e->pad = h;
+        head[c] = ei;
+        nb++;
+    folded:;
+    }
+    /* columns from the right: a few sorted by insertion, many walked */
+    if ((uint32_t)ng * (uint32_t)ng > 4u * (uint32_t)(hi - lo + 1)) {
+        ng = 0;
+        for (k = hi; k >= lo; k--)
+            if (head[k] != ZS_NONE)
+                cols[ng++] = (uint16_t)k;
+    } else {
+        for (g = 1; g < ng; g++) {
+            uint16_t c = cols[g];
+            for (k = g; k > 0 && cols[k - 1] < c; k--)
+                cols[k] = cols[k - 1];
+            cols[k] = c;
+        }
+    }
+    /* merge from the back: each new edge after the old ones right of it
+     * (the list has room; the tail is read from the lists only) */
+    i = sorted - 1;
+    k = sorted + nb - 1;
+    {
+        /* the leftmost old edge stops every scan that starts at or right of
+         * it: no bound test in the moving loop (unless all have moved: a
+         * list off the screen is in no order of x) */
+        const int32_t x0 = sorted > 0 ? edges[ael[0]].x : INT32_MAX;
+        for (g = 0; g < ng; g++) {
+            const uint16_t c = cols[g];
+            uint16_t b = head[c];
+            head[c] = ZS_NONE;
+            for (; b != ZS_NONE; b = edges[b].pad) {
+                const int32_t bx = edges[b].x;
+                if (bx >= x0 && i >= 0) {
+                    while (edges[ael[i]].x > bx)
+                        ael[k--] = ael[i--];
+                } else {
+                    for (; i >= 0; i--)
+                        ael[k--] = ael[i];
+                }
+                ael[k--] = b;
+            }
+        }
+    }
+    return sorted + nb;
 }
 
 /* Activates the triangles first met on row y; sorts, folds and merges the
@@ -159,6 +215,14 @@ static void add_new_edges(zs_renderer *r, int32_t y)
     n = r->priv.n_ael;
     if (n == sorted)
         return;
+    if (r->priv.sort_keys) {
+        clear_twins(r);
+        n = merge_columns(r, sorted, n);
+        r->priv.n_ael = (uint16_t)n;
+        r->priv.n_sorted = (uint16_t)n;
+        return;
+    }
+    /* without the scratch (ZS_CFG_NO_ZLINE): sort by insertion, fold, merge */
     sort_batch(r, ael + sorted, n - sorted);
     /* fold shared edges: they start at the same column */
     w = sorted;
@@ -246,7 +310,33 @@ static void step_edges(zs_renderer *r, int32_t y)
     const int32_t next = y + 1;
     int i, kept = 0, n_cont = 0;
     int32_t prev_x = INT32_MIN;
+    /* up to the first edge that retires, every edge keeps its place or moves
+     * back among those before it: the list is rewritten only there */
     for (i = 0; i < n; i++) {
+        zs_edge *const e = &edges[ael[i]];
+        int32_t x, err;
+        if (next >= e->y_end)
+            break;
+        x = e->x + e->step;
+        err = e->err - e->rstep;
+        if (err < 0) {
+            err += e->den;
+            x++;
+        }
+        e->x = x;
+        e->err = err;
+        if (x >= prev_x) {
+            prev_x = x;
+        } else {
+            const uint16_t ei = ael[i];
+            int j = i;
+            for (; j > 0 && edges[ael[j - 1]].x > x; j--)
+                ael[j] = ael[j - 1];
+            ael[j] = ei;
+        }
+    }
+    kept = i;
+    for (; i < n; i++) {
         const uint16_t ei = ael[i];
         zs_edge *const e = &edges[ei];
         int32_t x, err;

@@ -253,6 +253,22 @@ void zs_continue_edge(zs_renderer *r, uint16_t ai, int32_t y);
 void zs_canonical_vertices(const zs_renderer *r, const zs_tri *t, const zs_vert *v[3]);
 void zs_record_depth_plane(zs_active *a, zs_active_plane *p, const zs_vert *s[3],
                            const zs_recip *area2, int32_t ox, int32_t oy, int32_t y);
+/* raster.c's edge scratch (priv.sort_keys, 8 bytes a column; NULL with
+ * ZS_CFG_NO_ZLINE): the twin table of the row's batch, 2^k keys (4 bytes:
+ * the two vertex indices of an edge made for this row, or ZS_TWIN_EMPTY)
+ * and as many edge indices, 2^k the most that fits (at most 128, none for
+ * widths under 49; priv.twin_shift = 32 - k, 0 for none); then
+ * merge_columns' column lists and columns, 2 (width + 1) bytes each. */
+#define ZS_TWIN_EMPTY 0xFFFFFFFFu
+#define ZS_TWIN_PROBES 8
+static inline unsigned zs_twin_shift(uint32_t width)
+{
+    return width >= 193u ? 25u : width >= 97u ? 26u : width >= 49u ? 27u : 0u;
+}
+static inline uint32_t zs_twin_slots(unsigned shift)
+{
+    return shift ? (0xFFFFFFFFu >> shift) + 1u : 0u;
+}
 /* raster.c: rows, edges, the active edge list */
 void zs_raster_begin(zs_renderer *r);
 void zs_raster_row(zs_renderer *r, int y, uint8_t *row); /* row NULL: step only */

@@ -806,6 +806,8 @@ typedef struct zs_renderer_private {
     const struct zs_texture **textures; /* the frame's textures, slot k at k - 1 */
     int64_t tex_depth_a;              /* far / (far - near), Q30 (1/w ~ A - depth) */
     uint8_t n_textures;               /* slots used this frame */
+    uint8_t twin_shift;               /* raster: 32 - log2 of the twin table's size, 0
+                                         for none (src/zs_internal.h) */
     uint32_t tex_serial;              /* frames begun (texture planes' freshness) */
     zs_setup_hook_fn setup_hook;
     void *setup_hook_user;

@@ -1,0 +1,159 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * test_edges: the edge table's shortcuts (src/raster.c, src/activate.c)
+ * against the oracles.
+ *  - Twins: an edge made for a row whose twin (the same two vertices, the
+ *    other side) was made for the same row joins the twin's record instead of
+ *    being made and folded. Covered at every size of the twin table (widths
+ *    under 49 have none; 49, 97 and 193 columns and up have 32, 64 and 128
+ *    slots), with batches larger than the table (probes run out: the rest is
+ *    left to the numeric fold) and with seams (the same corners as copied
+ *    vertices: other indices, equal coordinates, folded numerically).
+ *  - Column lists (merge_columns): batches with many edges off either side of
+ *    the screen, merged into lists that hold old edges off the screen too
+ *    (a column's list there is in no order of x).
+ * Every frame: zt_guarded_frame and the ray caster in span mode, and the same
+ * image byte for byte in zline mode and in span mode without the edge
+ * scratch (ZS_CFG_NO_ZLINE: insertion sort and numeric fold only).
+ */
+#include "zt_test.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define SEED 0xED6E5ED600000013ull
+#define EH 40
+#define SCENES 10
+
+static zs_color rnd_color(zt_rng *g)
+{
+    return (zs_color)(zt_u32(g) & 0xFFFFFFu);
+}
+
+/* A vertex, and with seam set a second one at the same place (same
+ * coordinates, another index). */
+static int vtx(zt_scene *sc, double x, double y, double d, zs_color c, int *seam)
+{
+    int v = zt_scene_vertex_px(sc, x, y, d, c);
+    if (seam)
+        *seam = zt_scene_vertex_px(sc, x, y, d, c);
+    return v;
+}
+
+/* Fans and strips whose tops lie on row yr (so their shared edges are made
+ * for one row), some with seams, spread from 60 px left of the screen to 60
+ * px right of it; big triangles off either side reaching over many rows, so
+ * the rows' batches meet old edges off the screen. */
+static void scene(zt_rng *g, zt_scene *sc, int w, int yr, int groups)
+{
+    for (int k = 0; k < groups; k++) {
+        int kind = (int)zt_below(g, 3);
+        double ax = zt_uniform(g, -60, w + 60), d = zt_uniform(g, 1.2, 3.5);
+        int seams = zt_below(g, 3) == 0;
+        if (kind == 0) { /* fan from an apex on row yr */
+            int m = 3 + (int)zt_below(g, 10), rim[13], rim2[13];
+            double R = zt_uniform(g, 6, 60), Ry = zt_uniform(g, 3, 25);
+            double ay = yr + zt_uniform(g, -0.3, 0.3);
+            int apex = vtx(sc, ax, ay, d, rnd_color(g), NULL);
+            for (int i = 0; i < m; i++) {
+                double th = 3.141592653589793 * (0.05 + 0.9 * (i + zt_uniform(g, 0.1, 0.9)) / m);
+                rim[i] = vtx(sc, ax + R * cos(th), ay + 1 + Ry * sin(th),
+                             d * (1 + zt_uniform(g, -0.2, 0.2)), rnd_color(g),
+                             seams ? &rim2[i] : NULL);
+            }
+            for (int i = 0; i + 1 < m; i++) /* with seams, every other one uses the copies */
+                zt_scene_tri_front(sc, apex, seams && i % 2 ? rim2[i] : rim[i],
+                                   seams && i % 2 ? rim2[i + 1] : rim[i + 1], rnd_color(g));
+        } else if (kind == 1) { /* strip of quads, tops on row yr */
+            int n = 2 + (int)zt_below(g, 18), A[21], B[21], A2[21], B2[21];
+            double dx = zt_uniform(g, 2, 12), drop = zt_uniform(g, 2, 20);
+            for (int i = 0; i <= n; i++) {
+                double x = ax + i * dx;
+                A[i] = vtx(sc, x, yr + zt_uniform(g, -0.3, 0.3), d, rnd_color(g),
+                           seams ? &A2[i] : NULL);
+                B[i] = vtx(sc, x + zt_uniform(g, -3, 3), yr + drop + zt_uniform(g, -1, 1),
+                           d * 1.05, rnd_color(g), seams ? &B2[i] : NULL);
+            }
+            for (int i = 0; i < n; i++) {
+                int s = seams && i % 2;
+                zt_scene_tri_front(sc, A[i], A[i + 1], B[i], rnd_color(g));
+                zt_scene_tri_front(sc, s ? A2[i + 1] : A[i + 1], s ? B2[i + 1] : B[i + 1],
+                                   s ? B2[i] : B[i], rnd_color(g));
+            }
+        } else { /* big, off one side, tops on other rows */
+            double side = zt_below(g, 2) ? -zt_uniform(g, 5, 80) : w + zt_uniform(g, 5, 80);
+            int v0 = vtx(sc, side, zt_uniform(g, -10, EH + 10), d, rnd_color(g), NULL);
+            int v1 = vtx(sc, side + zt_uniform(g, -40, 40), zt_uniform(g, -10, EH + 10),
+                         d * 1.1, rnd_color(g), NULL);
+            int v2 = vtx(sc, zt_uniform(g, -20, w + 20), zt_uniform(g, -10, EH + 10), d * 0.9,
+                         rnd_color(g), NULL);
+            zt_scene_tri_front(sc, v0, v1, v2, rnd_color(g));
+        }
+    }
+}
+
+static void run_width(int w, uint64_t seed)
+{
+    unsigned long bad = 0;
+    zt_rng g;
+    zt_rng_seed(&g, seed);
+    zt_ctx c, cn;
+    zt_ctx_init_flags(&c, w, EH, 1500, 6000, 1500, 0);
+    zt_ctx_init_flags(&cn, w, EH, 1500, 6000, 1500, ZS_CFG_NO_ZLINE);
+    zs_camera cam;
+    zt_camera_std(&cam, ZS_FX(1) / 2, ZS_FX(60));
+    zt_scene sc;
+    zt_scene_init(&sc, w, EH, 256);
+    zt_gframe *f = zt_gframe_new(w, EH), *fz = zt_gframe_new(w, EH), *fn = zt_gframe_new(w, EH);
+    static const int bands[] = {1, 5, EH};
+    for (int k = 0; k < SCENES; k++) {
+        zt_scene_reset(&sc);
+        int yr = (int)zt_range(&g, 0, EH - 4);
+        scene(&g, &sc, w, yr, 6 + (int)zt_below(&g, 30));
+        zt_scene_random(&g, &sc, 10, ZT_SC_PLAIN | ZT_SC_SHARED | ZT_SC_BIG, 0.5);
+        zs_mesh m = zt_scene_mesh(&sc, 1, 1);
+        char what[120];
+        snprintf(what, sizeof what, "edges: width %d scene %d (row %d, %zu triangles, seed %llx)",
+                 w, k, yr, sc.nt, (unsigned long long)seed);
+        zt_guarded_frame(&c, &cam, ZS_MODE_SPAN, &m, 1, NULL, f, bands[k % 3]);
+        ZT_ST(f->draw_st, ZS_OK);
+        ZT_CHECK(f->st.tris_dropped == 0 && f->st.records_skipped == 0 &&
+                     f->st.verts_dropped == 0,
+                 "%s: pools too small for the test", what);
+        bad += zt_vs_raycast(f, what);
+        zt_guarded_frame(&c, &cam, ZS_MODE_ZLINE, &m, 1, NULL, fz, bands[(k + 1) % 3]);
+        zt_guarded_frame(&cn, &cam, ZS_MODE_SPAN, &m, 1, NULL, fn, bands[(k + 2) % 3]);
+        long d = zt_first_diff(f->img, fz->img, (size_t)w * EH * 2);
+        ZT_CHECK(d < 0, "%s: span and zline differ at pixel (%ld,%ld)", what, d / 2 % w,
+                 d / 2 / w);
+        d = zt_first_diff(f->img, fn->img, (size_t)w * EH * 2);
+        ZT_CHECK(d < 0, "%s: span with and without the edge scratch differ at pixel (%ld,%ld)",
+                 what, d / 2 % w, d / 2 / w);
+    }
+    zt_gframe_free(f);
+    zt_gframe_free(fz);
+    zt_gframe_free(fn);
+    zt_scene_free(&sc);
+    zt_ctx_free(&c);
+    zt_ctx_free(&cn);
+    ZT_CHECK(bad == 0, "width %d: %lu pixels disagree with the ray caster", w, bad);
+}
+
+/* No twin table (width 40), 32 slots (60), 64 (100), 128 (200, 300): twins,
+ * seams, full tables and off-screen lists at each. */
+static void test_twins_and_columns(void **state)
+{
+    (void)state;
+    static const int widths[] = {40, 48, 49, 60, 96, 97, 100, 192, 193, 200, 300};
+    for (size_t i = 0; i < sizeof widths / sizeof widths[0]; i++)
+        run_width(widths[i], SEED + i);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_twins_and_columns),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -151,21 +151,46 @@ static void depth_range(zs_active *a, const zs_vert *s[3])
     a->zhi = (uint16_t)((hi >> 15) + 2u);
 }
 
+/* A vertex's place in the canonical order as one unsigned key: y, then x
+ * (each biased so signed order becomes unsigned order). */
+static ZS_INLINE_ALWAYS uint32_t order_key(const zs_vert *p)
+{
+#if defined(__GNUC__) && defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ && \
+    (!defined(__arm__) || defined(__ARM_FEATURE_UNALIGNED))
+    uint32_t w; /* x in the low half, y in the high: one load (ARMv6-M makes it a call) */
+    __builtin_memcpy(&w, p, sizeof w);
+    return w ^ 0x80008000u;
+#else
+    return ((uint32_t)(uint16_t)p->y << 16 | (uint16_t)p->x) ^ 0x80008000u;
+#endif
+}
+
 /* The triangle's vertices in a canonical order: by y, then by x. Two
  * vertices of a stored triangle never share both, so equal triangles get
  * equal edges and equal planes however their vertices were rotated. */
 static ZS_HOT_INLINE void sort_canonical(const zs_renderer *r, const zs_tri *t,
                                          const zs_vert *v[3])
 {
-    const zs_vert *pool = r->priv.verts, *tmp;
-    v[0] = &pool[t->v[0]];
-    v[1] = &pool[t->v[1]];
-    v[2] = &pool[t->v[2]];
-#define ZS_AFTER(p, q) ((p)->y > (q)->y || ((p)->y == (q)->y && (p)->x > (q)->x))
-    if (ZS_AFTER(v[0], v[1])) { tmp = v[0]; v[0] = v[1]; v[1] = tmp; }
-    if (ZS_AFTER(v[1], v[2])) { tmp = v[1]; v[1] = v[2]; v[2] = tmp; }
-    if (ZS_AFTER(v[0], v[1])) { tmp = v[0]; v[0] = v[1]; v[1] = tmp; }
-#undef ZS_AFTER
+    const zs_vert *pool = r->priv.verts, *p0, *p1, *p2, *tp;
+    uint32_t k0, k1, k2, tk;
+    p0 = &pool[t->v[0]];
+    p1 = &pool[t->v[1]];
+    p2 = &pool[t->v[2]];
+    k0 = order_key(p0);
+    k1 = order_key(p1);
+    k2 = order_key(p2);
+#define ZS_ORDER(ka, pa, kb, pb)                                                          \
+    if (ka > kb) {                                                                        \
+        tk = ka; ka = kb; kb = tk;                                                        \
+        tp = pa; pa = pb; pb = tp;                                                        \
+    }
+    ZS_ORDER(k0, p0, k1, p1)
+    ZS_ORDER(k1, p1, k2, p2)
+    ZS_ORDER(k0, p0, k1, p1)
+#undef ZS_ORDER
+    v[0] = p0;
+    v[1] = p1;
+    v[2] = p2;
 }
 
 void zs_anchor_depth(const zs_renderer *r, const zs_active *a, zs_active_plane *pl, int32_t xa,

@@ -56,6 +56,26 @@ static int32_t color_gradient(int64_t num, const zs_recip *area2)
     return (int32_t)zs_recip_muldiv(area2, num, 4, (int64_t)1 << 28);
 }
 
+/* zs_pixel_word for one triangle's flat colour: the 2-byte formats (the
+ * panels' usual ones) packed inline, the others through format.c. */
+static ZS_INLINE_ALWAYS uint32_t flat_word(zs_format fmt, uint32_t rgb)
+{
+    union {
+        uint32_t w;
+        uint8_t b[4];
+    } u;
+    const uint32_t R = (rgb >> 16) & 255u, G = (rgb >> 8) & 255u, B = rgb & 255u;
+    if (fmt == ZS_FMT_RGB565_BE)
+        zs_store_rgb565_be(u.b, R, G, B);
+    else if (ZS_ONLY_565_ || fmt == ZS_FMT_RGB565)
+        zs_store_rgb565(u.b, R, G, B);
+    else
+        return zs_pixel_word(fmt, rgb);
+    u.b[2] = u.b[0]; /* held twice, as zs_pixel_word does */
+    u.b[3] = u.b[1];
+    return u.w;
+}
+
 void zs_shade_setup(const zs_renderer *r, zs_active *a, zs_active_color *ac, const zs_tri *t,
                     const zs_vert *v[3], int32_t ox, int32_t oy, const zs_recip *area2,
                     int32_t y)
@@ -85,7 +105,7 @@ void zs_shade_setup(const zs_renderer *r, zs_active *a, zs_active_color *ac, con
     }
     if (!ZS_HAS_PLANES_ || (c[0] == c[1] && c[1] == c[2])) {
         a->flags &= (uint8_t)~ZS_ACT_GOURAUD;
-        a->pixel = zs_pixel_word(r->shade.format, c[0]);
+        a->pixel = flat_word(r->shade.format, c[0]);
         return;
     }
     a->flags |= ZS_ACT_GOURAUD;

@@ -291,7 +291,6 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     int64_t cross;
     zs_recip area2;
     int long_left, plane_made = 0; /* area2 holds the area's reciprocal */
-    int32_t ox, oy;
     if (r->priv.n_active_free < 1 || r->priv.n_edge_free < 2) {
         r->stats.records_skipped++; /* capacity policy: the triangle is skipped */
         return 0;
@@ -334,25 +333,23 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
                             y);
         }
     }
-    /* colours in submission order (per-vertex shades follow t->v); the
-     * record's area is negative in that order (a front face). Only colour
-     * planes need the area's reciprocal here where no plane was made. */
-    if ((t->color >> 24) != 0 && r->priv.vshade) {
+    if ((t->color >> 24) == 0 || !r->priv.vshade) {
+        /* one colour (flags cleared above): no planes, no vertices */
+        a->pixel = zs_flat_pixel(r, t->color);
+    } else {
+        /* colours in submission order (per-vertex shades follow t->v); the
+         * record's area is negative in that order (a front face). Only
+         * colour planes need the area's reciprocal here where no plane was
+         * made. */
         v[0] = &pool[t->v[0]];
         v[1] = &pool[t->v[1]];
         v[2] = &pool[t->v[2]];
         if (!plane_made)
             zs_recip_init(&area2, cross);
-        ox = zs_asr32(v[0]->x, 4);
-        oy = zs_asr32(v[0]->y, 4);
-    } else { /* one colour: zs_shade_setup reads neither vertices nor origin */
-        v[0] = s[0];
-        v[1] = s[1];
-        v[2] = s[2];
-        ox = oy = 0;
+        area2.neg = 1;
+        zs_shade_setup(r, a, r->priv.acolor ? &r->priv.acolor[ai] : 0, t, v,
+                       zs_asr32(v[0]->x, 4), zs_asr32(v[0]->y, 4), &area2, y);
     }
-    area2.neg = 1;
-    zs_shade_setup(r, a, r->priv.acolor ? &r->priv.acolor[ai] : 0, t, v, ox, oy, &area2, y);
     r->stats.tris_drawn++;
     return 1;
 }

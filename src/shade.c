@@ -76,6 +76,13 @@ static ZS_INLINE_ALWAYS uint32_t flat_word(zs_format fmt, uint32_t rgb)
     return u.w;
 }
 
+uint32_t zs_flat_pixel(const zs_renderer *r, uint32_t color)
+{
+    if (!ZS_ONLY_565_ && r->shade.format == ZS_FMT_ID16)
+        return (color & 0xFFFFu) * 0x10001u; /* the tag twice (see zs_pixel_word) */
+    return flat_word(r->shade.format, color & WHITE);
+}
+
 void zs_shade_setup(const zs_renderer *r, zs_active *a, zs_active_color *ac, const zs_tri *t,
                     const zs_vert *v[3], int32_t ox, int32_t oy, const zs_recip *area2,
                     int32_t y)

@@ -324,6 +324,9 @@ void zs_fill_gouraud(const zs_renderer *r, const zs_active_color *a, int32_t dy,
 void zs_shade_setup(const zs_renderer *r, zs_active *a, zs_active_color *ac, const zs_tri *t,
                     const zs_vert *v[3], int32_t ox, int32_t oy, const zs_recip *area2,
                     int32_t y);
+/* The flat pixel word of a record's colour word (RGB, or the ID16 tag):
+ * what zs_shade_setup sets for a record without per-vertex colour. */
+uint32_t zs_flat_pixel(const zs_renderer *r, uint32_t color);
 uint32_t zs_light_color(uint32_t rgb, zs_fixed intensity);
 
 /* texture.c: texture mapping (ZS_CFG_TEXTURE) */

@@ -26,6 +26,29 @@ static void edge_init(zs_edge *e, const zs_vert *a, const zs_vert *b, int32_t y)
     int32_t q0 = zs_asr32(a->x - 8, 4), r0 = a->x - 8 - 16 * q0;
     int32_t t = 16 * y + 8 - a->y; /* in [0, 16) on the edge's first row */
     int32_t x, err, step;
+    e->den = den;
+    e->y_end = (int16_t)zs_first_row(b->y);
+    if (e->y_end > y + 1) {
+        step = (16 * dx) / den;
+        if (step * den > 16 * dx)
+            step--; /* floor */
+        e->step = step;
+        e->rstep = 16 * dx - step * den;
+        if (t < 16) {
+            /* the first column from the step, without a second division:
+             * with dx = step * dy + rem, m = r0 dy + t dx = 16 dy qa + n for
+             * r0 + t step = 16 qa + ra, n = ra dy + t rem in [0, 2 den) */
+            const int32_t A = r0 + t * step, qa = zs_asr32(A, 4);
+            const int32_t n = (A - 16 * qa) * dy + t * (e->rstep >> 4);
+            const int32_t c = n > den ? 2 : n > 0 ? 1 : 0; /* ceil(n / den) */
+            e->x = q0 + qa + c;
+            e->err = c * den - n;
+            return;
+        }
+    } else { /* covers one row: never stepped (a division saved, a helper call on M0) */
+        e->step = 0;
+        e->rstep = 0;
+    }
     if (t < 16) {
         int32_t m = r0 * dy + t * dx; /* |m| < 2^24 */
         int32_t q = m / den;
@@ -43,18 +66,6 @@ static void edge_init(zs_edge *e, const zs_vert *a, const zs_vert *b, int32_t y)
     }
     e->x = x;
     e->err = err;
-    e->den = den;
-    e->y_end = (int16_t)zs_first_row(b->y);
-    if (e->y_end > y + 1) {
-        step = (16 * dx) / den;
-        if (step * den > 16 * dx)
-            step--; /* floor */
-        e->step = step;
-        e->rstep = 16 * dx - step * den;
-    } else { /* covers one row: never stepped (a division saved, a helper call on M0) */
-        e->step = 0;
-        e->rstep = 0;
-    }
 }
 
 /* Depth planes hold window depth in Q40 (10 bits below the vertices' Q30, so

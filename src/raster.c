@@ -279,15 +279,14 @@ static void anchor_steep(zs_renderer *r, int32_t next)
 }
 
 /* An edge ends above row `next`: each of its triangles either ends too (freed
- * with its left edge) or goes on with its lower short edge (queued in cont).
- * Returns the new length of cont. */
-static inline int retire_edge(zs_renderer *r, const zs_edge *e, int32_t next,
-                              uint16_t *cont, int n_cont)
+ * with its left edge onto afree[*n_afree]) or goes on with its lower short
+ * edge (queued in cont). Returns the new length of cont. */
+static inline int retire_edge(zs_active *act, const zs_edge *e, int32_t next, uint16_t *cont,
+                              int n_cont, uint16_t *afree, unsigned *n_afree)
 {
-    zs_active *act = r->priv.active;
     if (e->lead != ZS_NONE) {
         if (next >= act[e->lead].y_end)
-            r->priv.active_free[r->priv.n_active_free++] = e->lead;
+            afree[(*n_afree)++] = e->lead;
         else
             cont[n_cont++] = e->lead;
     }
@@ -336,34 +335,43 @@ static void step_edges(zs_renderer *r, int32_t y)
         }
     }
     kept = i;
-    for (; i < n; i++) {
-        const uint16_t ei = ael[i];
-        zs_edge *const e = &edges[ei];
-        int32_t x, err;
-        if (next >= e->y_end) {
-            n_cont = retire_edge(r, e, next, cont, n_cont);
-            r->priv.edge_free[r->priv.n_edge_free++] = ei;
-            continue;
+    if (i < n) {
+        /* the free stacks' tops in locals (on M0 each priv field costs a
+         * literal load), written back before anything else takes from them */
+        zs_active *const act = r->priv.active;
+        uint16_t *const efree = r->priv.edge_free, *const afree = r->priv.active_free;
+        unsigned n_efree = r->priv.n_edge_free, n_afree = r->priv.n_active_free;
+        for (; i < n; i++) {
+            const uint16_t ei = ael[i];
+            zs_edge *const e = &edges[ei];
+            int32_t x, err;
+            if (next >= e->y_end) {
+                n_cont = retire_edge(act, e, next, cont, n_cont, afree, &n_afree);
+                efree[n_efree++] = ei;
+                continue;
+            }
+            /* locals: a store through e could otherwise force reloads */
+            x = e->x + e->step;
+            err = e->err - e->rstep;
+            if (err < 0) {
+                err += e->den;
+                x++;
+            }
+            e->x = x;
+            e->err = err;
+            if (x >= prev_x) {
+                prev_x = x;
+                ael[kept++] = ei;
+            } else {
+                int j = kept;
+                for (; j > 0 && edges[ael[j - 1]].x > x; j--)
+                    ael[j] = ael[j - 1];
+                ael[j] = ei;
+                kept++;
+            }
         }
-        /* locals: a store through e could otherwise force reloads */
-        x = e->x + e->step;
-        err = e->err - e->rstep;
-        if (err < 0) {
-            err += e->den;
-            x++;
-        }
-        e->x = x;
-        e->err = err;
-        if (x >= prev_x) {
-            prev_x = x;
-            ael[kept++] = ei;
-        } else {
-            int j = kept;
-            for (; j > 0 && edges[ael[j - 1]].x > x; j--)
-                ael[j] = ael[j - 1];
-            ael[j] = ei;
-            kept++;
-        }
+        r->priv.n_edge_free = (uint16_t)n_efree;
+        r->priv.n_active_free = (uint16_t)n_afree;
     }
     r->priv.n_ael = (uint16_t)kept;
     r->priv.n_sorted = (uint16_t)kept;

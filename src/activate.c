@@ -121,15 +121,24 @@ static ZS_INLINE_ALWAYS void depth_plane(zs_active *a, zs_active_plane *p, const
     p->zdy = zs_recip_muldiv(area2, zs_smul32(z2, (int32_t)dx1) - zs_smul32(z1, (int32_t)dx2), 14,
                              ZS_DEPTH_GRADIENT_LIMIT);
     /* Below 2^32 each, the spread is under 2 * 2^28 * 2^17 = 2^46: the
-     * common case needs no products. */
-    if ((uint64_t)(abs64(a->zdx) | abs64(p->zdy)) >= ((uint64_t)1 << 32)) {
-        /* extents in 1/16 px (<= 2^17), plus a pixel for the centres around */
-        w16 = max3_64(0, dx1, dx2) - min3_64(0, dx1, dx2) + 16;
-        h16 = dy2 + 16;
-        /* gradients <= 2^48: at >> 4 each product stays below 2^62 */
-        if ((abs64(a->zdx) >> 4) * w16 + (abs64(p->zdy) >> 4) * h16 >= ZS_STEEP_SPREAD)
-            a->flags |= ZS_ACT_STEEP;
+     * common case needs no products. There the row constant comes in one
+     * step: with the origin's terms inside the shift (multiples of 16 shift
+     * out exactly) it is the same value, and the products stay below
+     * 2^32 * 2^17 (28.4 coordinates fit int16; rows are below 2^11). */
+    if ((uint64_t)(abs64(a->zdx) | abs64(p->zdy)) < ((uint64_t)1 << 32)) {
+        p->zrow = (int64_t)s[0]->z * 1024 +
+                  zs_asr64(zs_mul64_small(a->zdx, 8 - s[0]->x) +
+                               zs_mul64_small(p->zdy, 16 * y + 8 - s[0]->y),
+                           4);
+        a->y0 = (int16_t)y;
+        return;
     }
+    /* extents in 1/16 px (<= 2^17), plus a pixel for the centres around */
+    w16 = max3_64(0, dx1, dx2) - min3_64(0, dx1, dx2) + 16;
+    h16 = dy2 + 16;
+    /* gradients <= 2^48: at >> 4 each product stays below 2^62 */
+    if ((abs64(a->zdx) >> 4) * w16 + (abs64(p->zdy) >> 4) * h16 >= ZS_STEEP_SPREAD)
+        a->flags |= ZS_ACT_STEEP;
     /* depth at the origin pixel centre, from vertex 0 (less than a pixel away) */
     z0 = (int64_t)s[0]->z * 1024 +
          zs_asr64(zs_mul64_small(a->zdx, 16 * ox + 8 - s[0]->x) +

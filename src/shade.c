@@ -112,7 +112,7 @@ void zs_shade_setup(const zs_renderer *r, zs_active *a, zs_active_color *ac, con
     }
     if (!ZS_HAS_PLANES_ || (c[0] == c[1] && c[1] == c[2])) {
         a->flags &= (uint8_t)~ZS_ACT_GOURAUD;
-        a->pixel = flat_word(r->shade.format, c[0]);
+        a->pixel = zs_pixel_word(r->shade.format, c[0]); /* equal vertex colours: rare */
         return;
     }
     a->flags |= ZS_ACT_GOURAUD;

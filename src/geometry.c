@@ -408,8 +408,9 @@ static ZS_NOINLINE int transform_vertices(const draw_ctx *c, uint16_t base, uint
     inside_rows ir;
     unsigned test;
     /* zs_project_fast suits every vertex within near, far and the guard
-     * band when far is below 2^29 */
-    if (c->fast && zs_proj_init(r, &p) && r->cam.far_z < ((int32_t)1 << 29) &&
+     * band when far is below 2^29 (not in a small build: the loop below
+     * projects the same vertices alike) */
+    if (!ZS_SMALL_ && c->fast && zs_proj_init(r, &p) && r->cam.far_z < ((int32_t)1 << 29) &&
         inside_rows_init(c, &ir)) {
         int all = project_all(c, &ir, &p, v, n);
         if (r->priv.vshade || !all) /* shade words, outcodes: a second pass */
@@ -425,8 +426,9 @@ static ZS_NOINLINE int transform_vertices(const draw_ctx *c, uint16_t base, uint
             }
         return all;
     }
-    /* a mesh wholly inside needs no outcode per vertex */
-    test = box_inside(c, n) ? 0u : (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_GUARD);
+    /* a mesh wholly inside needs no outcode per vertex (a small build takes
+     * them all: the same vertices are inside) */
+    test = !ZS_SMALL_ && box_inside(c, n) ? 0u : (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_GUARD);
     for (i = 0; i < n; i++, v++) {
         int64_t xc, yc, w;
         unsigned oc = 0;
@@ -734,7 +736,8 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     tag_base = tag0 % 65535u;
     tag_fast = tag0 <= UINT32_MAX - m->triangle_count; /* and t < 65535: uint16 count */
     r->priv.tag_counter += m->triangle_count;
-    if (inside && vfit == m->vertex_count && tag_fast && !r->priv.ranges) {
+    /* (a small build takes the loop below: the same outcomes and counts) */
+    if (!ZS_SMALL_ && inside && vfit == m->vertex_count && tag_fast && !r->priv.ranges) {
         r->stats.tris_submitted += m->triangle_count;
         setup_inside(&c, base, tag_base);
         LINES_NORMALS(&c, first, tag_base);

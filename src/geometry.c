@@ -96,6 +96,21 @@ static ZS_NOINLINE void model_view(draw_ctx *c)
 static inline void fast_clip(const draw_ctx *c, int32_t px, int32_t py, int32_t pz,
                              int64_t *xc, int64_t *yc, int64_t *w)
 {
+#if ZS_SMALL_
+    /* the same sums as a loop over the rows */
+    const int32_t p[3] = {px, py, pz};
+    int64_t *out[3];
+    int k, j;
+    out[0] = xc;
+    out[1] = yc;
+    out[2] = w;
+    for (k = 0; k < 3; k++) {
+        int64_t s = 32768;
+        for (j = 0; j < 3; j++)
+            s += zs_mul_32x16(c->clip[k][j], p[j]);
+        *out[k] = zs_asr64(s, 16) + c->clip_t[k];
+    }
+#else
     const int32_t *m0 = c->clip[0], *m1 = c->clip[1], *m2 = c->clip[2];
     int64_t sx = zs_mul_32x16(m0[0], px) + zs_mul_32x16(m0[1], py) + zs_mul_32x16(m0[2], pz) + 32768;
     int64_t sy = zs_mul_32x16(m1[0], px) + zs_mul_32x16(m1[1], py) + zs_mul_32x16(m1[2], pz) + 32768;
@@ -103,6 +118,7 @@ static inline void fast_clip(const draw_ctx *c, int32_t px, int32_t py, int32_t 
     *xc = zs_asr64(sx, 16) + c->clip_t[0];
     *yc = zs_asr64(sy, 16) + c->clip_t[1];
     *w = zs_asr64(sw, 16) + c->clip_t[2];
+#endif
 }
 
 static void to_clip(const draw_ctx *c, uint32_t i, int64_t *xc, int64_t *yc, int64_t *w)

@@ -554,10 +554,10 @@ static ZS_COLD int clip_and_setup(draw_ctx *c, uint16_t base, uint32_t t, uint16
     for (k = 0; k < 3; k++) {
         const zs_vert *pv = &pool[base + idx[k]];
         to_clip(c, idx[k], &v[k].xc, &v[k].yc, &v[k].w);
-        v[k].shade = r->priv.vshade ? r->priv.vshade[base + idx[k]] : 0;
+        v[k].shade = ZS_HAS_PLANES_ && r->priv.vshade ? r->priv.vshade[base + idx[k]] : 0;
         v[k].pool = (pv->z & ZS_VERT_UNPROJECTED) ? (uint16_t)ZS_NONE : (uint16_t)(base + idx[k]);
-        v[k].uv[0] = c->tex_slot ? c->mesh->uvs[2u * idx[k]] : 0;
-        v[k].uv[1] = c->tex_slot ? c->mesh->uvs[2u * idx[k] + 1u] : 0;
+        v[k].uv[0] = ZS_HAS_TEXTURE && c->tex_slot ? c->mesh->uvs[2u * idx[k]] : 0;
+        v[k].uv[1] = ZS_HAS_TEXTURE && c->tex_slot ? c->mesh->uvs[2u * idx[k] + 1u] : 0;
     }
     r->stats.tris_clipped++;
     /* start from a canonical vertex: the same triangle with its vertices
@@ -576,7 +576,7 @@ static ZS_COLD int clip_and_setup(draw_ctx *c, uint16_t base, uint32_t t, uint16
     for (k = 0; k < n; k++)
         if (v[k].pool == ZS_NONE) {
             v[k].pool = zs_project_vertex(r, v[k].xc, v[k].yc, (int32_t)v[k].w, v[k].shade);
-            if (r->priv.tex_verts && v[k].pool != ZS_NONE) { /* texture.c's record */
+            if (ZS_HAS_TEXTURE && r->priv.tex_verts && v[k].pool != ZS_NONE) { /* texture.c's record */
                 zs_tex_vert *tv = &r->priv.tex_verts[v[k].pool];
                 tv->u = v[k].uv[0];
                 tv->v = v[k].uv[1];
@@ -779,7 +779,8 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
             outcome = clip_and_setup(&c, base, t,
                                      tag_fast ? tag_from_base(tag_base, t) : tag_of(tag0, t));
         } else {
-            int64_t area2 = zs_area2_inline(v0, v1, v2);
+            /* (a small build calls setup.c's copy) */
+            int64_t area2 = ZS_SMALL_ ? zs_area2(v0, v1, v2) : zs_area2_inline(v0, v1, v2);
             if (area2 >= 0) /* culled before lighting the face */
                 outcome = ZS_SETUP_CULLED;
             else

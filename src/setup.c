@@ -255,7 +255,7 @@ int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, int
     t->v[0] = i0;
     t->v[1] = i1;
     t->v[2] = i2;
-    t->color = r->shade.format == ZS_FMT_ID16 ? tag : color;
+    t->color = (ZS_HAS_FORMATS || ZS_HAS_MONO) && r->shade.format == ZS_FMT_ID16 ? tag : color;
     t->next = bucket[row0];
     bucket[row0] = r->priv.n_tris;
     r->priv.n_tris++;

@@ -505,6 +505,17 @@ static uint16_t tag_from_base(uint32_t base, uint32_t t)
     return (uint16_t)(v + 1u);
 }
 
+/* zs_draw's tag of triangle t: one copy out of line in a small build. */
+#if ZS_SMALL_
+static ZS_NOINLINE uint16_t draw_tag(int fast, uint32_t base, uint32_t tag0, uint32_t t)
+{
+    return fast ? tag_from_base(base, t) : tag_of(tag0, t);
+}
+#define DRAW_TAG(t) draw_tag(tag_fast, tag_base, tag0, t)
+#else
+#define DRAW_TAG(t) (tag_fast ? tag_from_base(tag_base, t) : tag_of(tag0, t))
+#endif
+
 /* Is a before b in lexicographic order of (w, yc, xc)? */
 static ZS_NOINLINE int svert_before(const zs_svert *a, const zs_svert *b)
 {
@@ -576,7 +587,8 @@ static ZS_COLD int clip_and_setup(draw_ctx *c, uint16_t base, uint32_t t, uint16
     for (k = 0; k < n; k++)
         if (v[k].pool == ZS_NONE) {
             v[k].pool = zs_project_vertex(r, v[k].xc, v[k].yc, (int32_t)v[k].w, v[k].shade);
-            if (ZS_HAS_TEXTURE && r->priv.tex_verts && v[k].pool != ZS_NONE) { /* texture.c's record */
+            /* texture.c's record */
+            if (ZS_HAS_TEXTURE && r->priv.tex_verts && v[k].pool != ZS_NONE) {
                 zs_tex_vert *tv = &r->priv.tex_verts[v[k].pool];
                 tv->u = v[k].uv[0];
                 tv->v = v[k].uv[1];
@@ -776,8 +788,7 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
         v1 = &pool[base + i1];
         v2 = &pool[base + i2];
         if ((v0->z | v1->z | v2->z) & ZS_VERT_UNPROJECTED) {
-            outcome = clip_and_setup(&c, base, t,
-                                     tag_fast ? tag_from_base(tag_base, t) : tag_of(tag0, t));
+            outcome = clip_and_setup(&c, base, t, DRAW_TAG(t));
         } else {
             /* (a small build calls setup.c's copy) */
             int64_t area2 = ZS_SMALL_ ? zs_area2(v0, v1, v2) : zs_area2_inline(v0, v1, v2);
@@ -786,8 +797,7 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
             else
                 outcome = zs_setup_triangle(r, (uint16_t)(base + i0), (uint16_t)(base + i1),
                                             (uint16_t)(base + i2), area2, face_color(&c, t),
-                                            tag_fast ? tag_from_base(tag_base, t)
-                                                     : tag_of(tag0, t));
+                                            DRAW_TAG(t));
         }
         count_outcome(&r->stats, outcome);
     }

@@ -383,9 +383,10 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
         r->priv.state = ZS_STATE_RENDERING;
     }
     for (y = r->priv.next_row; y < y0; y++) {
-        if (y < r->priv.line_next) /* hidden lines render a row ahead */
+        if (ZS_HAS_MONO && y < r->priv.line_next) /* hidden lines render a row ahead */
             continue;
-        if (r->priv.mode != ZS_MODE_WARNOCK) /* it keeps no state between rows */
+        /* Warnock mode keeps no state between rows */
+        if (!ZS_HAS_WARNOCK || r->priv.mode != ZS_MODE_WARNOCK)
             zs_raster_row(r, y, 0);
     }
     if (kind == ZS_ROWS_BYTES) {

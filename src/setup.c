@@ -71,8 +71,8 @@ void zs_project(const zs_renderer *r, int64_t xc, int64_t yc, int32_t w, int16_t
     int64_t nx, ny, q, zz;
     zs_proj p;
     /* (a small build: this path only, the same results in fewer bytes) */
-    if (!ZS_SMALL_ && w < ((int32_t)1 << 28) && w >= r->cam.near_z && w <= r->cam.far_z && within7(xc, w) &&
-        within7(yc, w) && zs_proj_init(r, &p)) {
+    if (!ZS_SMALL_ && w < ((int32_t)1 << 28) && w >= r->cam.near_z && w <= r->cam.far_z &&
+        within7(xc, w) && within7(yc, w) && zs_proj_init(r, &p)) {
         zs_vert v;
         ZS_PROJECT_FAST(&p, (int32_t)xc, (int32_t)yc, w, &v, 0);
         *x = v.x;

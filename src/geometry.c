@@ -733,16 +733,19 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     c.mesh = m;
     c.model = model ? model : &zs_identity34;
     first = r->priv.n_tris;
-    if (r->priv.draw_starts && first < r->cfg.max_triangles) /* hidden lines */
+    if (ZS_HAS_MONO && r->priv.draw_starts && first < r->cfg.max_triangles) /* hidden lines */
         r->priv.draw_starts[first >> 3] |= (uint8_t)(1u << (first & 7u));
     model_view(&c);
     prepare_clip_rows(&c);
     c.lit = (uint8_t)(r->shade.light_count > 0 || r->shade.ambient != ZS_FX_ONE);
-    c.vertex_light =
-        (uint8_t)(r->shade.shading == ZS_SHADE_GOURAUD && c.lit && m->vertex_normals != 0);
-    c.vertex_color = (uint8_t)(r->shade.shading == ZS_SHADE_GOURAUD && m->vertex_colors != 0);
+    /* (without ZS_HAS_GOURAUD shading is flat and fog off: zs_frame_shading) */
+    c.vertex_light = (uint8_t)(ZS_HAS_GOURAUD && r->shade.shading == ZS_SHADE_GOURAUD && c.lit &&
+                               m->vertex_normals != 0);
+    c.vertex_color =
+        (uint8_t)(ZS_HAS_GOURAUD && r->shade.shading == ZS_SHADE_GOURAUD && m->vertex_colors != 0);
     c.tri_flags = ((c.vertex_light || c.vertex_color) ? ZS_TRI_MODULATE : 0u) |
-                  ((r->shade.fog.enabled && !c.tex_slot) ? ZS_TRI_FOG : 0u) | /* texture.c fogs */
+                  /* texture.c fogs */
+                  ((ZS_HAS_GOURAUD && r->shade.fog.enabled && !c.tex_slot) ? ZS_TRI_FOG : 0u) |
                   (c.tex_slot ? ZS_TRI_TEXTURED : 0u);
 
     /* vertices: transform all that fit the pool (capacity policy: the last

@@ -230,7 +230,7 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
     if (ZS_HAS_ABUFFER)
         zs_abuffer_frame(r);
     memset(r->priv.buckets, 0xFF, (size_t)r->cfg.height * 2u);
-    if (r->priv.draw_starts)
+    if (ZS_HAS_MONO && r->priv.draw_starts)
         memset(r->priv.draw_starts, 0, ((size_t)r->cfg.max_triangles + 7u) / 8u);
     r->priv.state = ZS_STATE_OPEN;
     return ZS_OK;

@@ -55,6 +55,7 @@ static int64_t plane_dist(const zs_renderer *r, int p, const zs_svert *v)
     return (p & 1 ? -c : c) + plane_bound(r, p, v->w);
 }
 
+#if ZS_HAS_PLANES_
 static int32_t lerp32(int32_t a, int32_t b, int64_t t_q28)
 {
     int64_t d = (int64_t)b - a;
@@ -72,6 +73,7 @@ static uint32_t lerp_shade(uint32_t a, uint32_t b, int64_t t_q28)
     }
     return out;
 }
+#endif
 
 /* v = the point where edge in -> out crosses plane p. Always interpolated
  * from the inside vertex so that two triangles sharing the edge get the
@@ -92,10 +94,15 @@ static void intersect(const zs_renderer *r, int p, const zs_svert *in, const zs_
      * depends on its w, so that is set first) */
     b = plane_bound(r, p, v->w);
     *coord(v, p >> 1) = p & 1 ? b : -b;
+#if ZS_HAS_PLANES_
     b = zs_muldiv64((int64_t)1 << 28, din, den, 0); /* the cut's parameter, Q28 */
     v->shade = lerp_shade(in->shade, out->shade, b);
     v->uv[0] = (int16_t)lerp32(in->uv[0], out->uv[0], b);
     v->uv[1] = (int16_t)lerp32(in->uv[1], out->uv[1], b);
+#else /* no colour or texture planes: nothing reads shade words or uvs */
+    v->shade = 0;
+    v->uv[0] = v->uv[1] = 0;
+#endif
     v->pool = ZS_NONE;
 }
 

@@ -19,7 +19,13 @@ static unsigned clz64(uint64_t v)
 #endif
 }
 
-#ifdef ZS_SPLIT_MUL
+/* (A small build divides by libgcc's helper instead: the same quotients, no
+ * table.) */
+#if defined(ZS_SPLIT_MUL) && !ZS_SMALL_
+#define RECIP_DIGITS 1
+#endif
+
+#ifdef RECIP_DIGITS
 /* Cortex-M0 has no divide instruction: a 32/16 quotient by libgcc's
  * __aeabi_uidivmod costs about 90 instructions, and the long division below
  * needs two. There both digits divide by the same d = v >> 16 in [2^15, 2^16),
@@ -95,7 +101,7 @@ uint32_t zs_udiv64_32(uint32_t nh, uint32_t nl, uint32_t v)
 {
     uint32_t vh = v >> 16, vl = v & 0xFFFFu, n1 = nl >> 16, n0 = nl & 0xFFFFu;
     uint32_t qh, ql, r, rem;
-#ifdef ZS_SPLIT_MUL
+#ifdef RECIP_DIGITS
     const uint32_t inv = recip15(vh);
     qh = div_by_recip(nh, vh, inv, &r);
 #else
@@ -110,7 +116,7 @@ uint32_t zs_udiv64_32(uint32_t nh, uint32_t nl, uint32_t v)
     }
     /* the partial remainder (nh, n1) - qh * v is below v: mod 2^32 is exact */
     rem = ((nh << 16) | n1) - qh * v;
-#ifdef ZS_SPLIT_MUL
+#ifdef RECIP_DIGITS
     ql = div_by_recip(rem, vh, inv, &r);
 #else
     ql = rem / vh;

@@ -96,6 +96,21 @@ static ZS_NOINLINE void model_view(draw_ctx *c)
 static inline void fast_clip(const draw_ctx *c, int32_t px, int32_t py, int32_t pz,
                              int64_t *xc, int64_t *yc, int64_t *w)
 {
+#if ZS_SMALL_
+    /* the same sums as a loop over the rows */
+    const int32_t p[3] = {px, py, pz};
+    int64_t *out[3];
+    int k, j;
+    out[0] = xc;
+    out[1] = yc;
+    out[2] = w;
+    for (k = 0; k < 3; k++) {
+        int64_t s = 32768;
+        for (j = 0; j < 3; j++)
+            s += zs_mul_32x16(c->clip[k][j], p[j]);
+        *out[k] = zs_asr64(s, 16) + c->clip_t[k];
+    }
+#else
     const int32_t *m0 = c->clip[0], *m1 = c->clip[1], *m2 = c->clip[2];
     int64_t sx = zs_mul_32x16(m0[0], px) + zs_mul_32x16(m0[1], py) + zs_mul_32x16(m0[2], pz) + 32768;
     int64_t sy = zs_mul_32x16(m1[0], px) + zs_mul_32x16(m1[1], py) + zs_mul_32x16(m1[2], pz) + 32768;
@@ -103,6 +118,7 @@ static inline void fast_clip(const draw_ctx *c, int32_t px, int32_t py, int32_t 
     *xc = zs_asr64(sx, 16) + c->clip_t[0];
     *yc = zs_asr64(sy, 16) + c->clip_t[1];
     *w = zs_asr64(sw, 16) + c->clip_t[2];
+#endif
 }
 
 static void to_clip(const draw_ctx *c, uint32_t i, int64_t *xc, int64_t *yc, int64_t *w)
@@ -408,8 +424,9 @@ static ZS_NOINLINE int transform_vertices(const draw_ctx *c, uint16_t base, uint
     inside_rows ir;
     unsigned test;
     /* zs_project_fast suits every vertex within near, far and the guard
-     * band when far is below 2^29 */
-    if (c->fast && zs_proj_init(r, &p) && r->cam.far_z < ((int32_t)1 << 29) &&
+     * band when far is below 2^29 (not in a small build: the loop below
+     * projects the same vertices alike) */
+    if (!ZS_SMALL_ && c->fast && zs_proj_init(r, &p) && r->cam.far_z < ((int32_t)1 << 29) &&
         inside_rows_init(c, &ir)) {
         int all = project_all(c, &ir, &p, v, n);
         if (r->priv.vshade || !all) /* shade words, outcodes: a second pass */
@@ -425,8 +442,9 @@ static ZS_NOINLINE int transform_vertices(const draw_ctx *c, uint16_t base, uint
             }
         return all;
     }
-    /* a mesh wholly inside needs no outcode per vertex */
-    test = box_inside(c, n) ? 0u : (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_GUARD);
+    /* a mesh wholly inside needs no outcode per vertex (a small build takes
+     * them all: the same vertices are inside) */
+    test = !ZS_SMALL_ && box_inside(c, n) ? 0u : (ZS_OUT_NEAR | ZS_OUT_FAR | ZS_OUT_GUARD);
     for (i = 0; i < n; i++, v++) {
         int64_t xc, yc, w;
         unsigned oc = 0;
@@ -487,6 +505,17 @@ static uint16_t tag_from_base(uint32_t base, uint32_t t)
     return (uint16_t)(v + 1u);
 }
 
+/* zs_draw's tag of triangle t: one copy out of line in a small build. */
+#if ZS_SMALL_
+static ZS_NOINLINE uint16_t draw_tag(int fast, uint32_t base, uint32_t tag0, uint32_t t)
+{
+    return fast ? tag_from_base(base, t) : tag_of(tag0, t);
+}
+#define DRAW_TAG(t) draw_tag(tag_fast, tag_base, tag0, t)
+#else
+#define DRAW_TAG(t) (tag_fast ? tag_from_base(tag_base, t) : tag_of(tag0, t))
+#endif
+
 /* Is a before b in lexicographic order of (w, yc, xc)? */
 static ZS_NOINLINE int svert_before(const zs_svert *a, const zs_svert *b)
 {
@@ -536,10 +565,10 @@ static ZS_COLD int clip_and_setup(draw_ctx *c, uint16_t base, uint32_t t, uint16
     for (k = 0; k < 3; k++) {
         const zs_vert *pv = &pool[base + idx[k]];
         to_clip(c, idx[k], &v[k].xc, &v[k].yc, &v[k].w);
-        v[k].shade = r->priv.vshade ? r->priv.vshade[base + idx[k]] : 0;
+        v[k].shade = ZS_HAS_PLANES_ && r->priv.vshade ? r->priv.vshade[base + idx[k]] : 0;
         v[k].pool = (pv->z & ZS_VERT_UNPROJECTED) ? (uint16_t)ZS_NONE : (uint16_t)(base + idx[k]);
-        v[k].uv[0] = c->tex_slot ? c->mesh->uvs[2u * idx[k]] : 0;
-        v[k].uv[1] = c->tex_slot ? c->mesh->uvs[2u * idx[k] + 1u] : 0;
+        v[k].uv[0] = ZS_HAS_TEXTURE && c->tex_slot ? c->mesh->uvs[2u * idx[k]] : 0;
+        v[k].uv[1] = ZS_HAS_TEXTURE && c->tex_slot ? c->mesh->uvs[2u * idx[k] + 1u] : 0;
     }
     r->stats.tris_clipped++;
     /* start from a canonical vertex: the same triangle with its vertices
@@ -558,7 +587,8 @@ static ZS_COLD int clip_and_setup(draw_ctx *c, uint16_t base, uint32_t t, uint16
     for (k = 0; k < n; k++)
         if (v[k].pool == ZS_NONE) {
             v[k].pool = zs_project_vertex(r, v[k].xc, v[k].yc, (int32_t)v[k].w, v[k].shade);
-            if (r->priv.tex_verts && v[k].pool != ZS_NONE) { /* texture.c's record */
+            /* texture.c's record */
+            if (ZS_HAS_TEXTURE && r->priv.tex_verts && v[k].pool != ZS_NONE) {
                 zs_tex_vert *tv = &r->priv.tex_verts[v[k].pool];
                 tv->u = v[k].uv[0];
                 tv->v = v[k].uv[1];
@@ -703,16 +733,19 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     c.mesh = m;
     c.model = model ? model : &zs_identity34;
     first = r->priv.n_tris;
-    if (r->priv.draw_starts && first < r->cfg.max_triangles) /* hidden lines */
+    if (ZS_HAS_MONO && r->priv.draw_starts && first < r->cfg.max_triangles) /* hidden lines */
         r->priv.draw_starts[first >> 3] |= (uint8_t)(1u << (first & 7u));
     model_view(&c);
     prepare_clip_rows(&c);
     c.lit = (uint8_t)(r->shade.light_count > 0 || r->shade.ambient != ZS_FX_ONE);
-    c.vertex_light =
-        (uint8_t)(r->shade.shading == ZS_SHADE_GOURAUD && c.lit && m->vertex_normals != 0);
-    c.vertex_color = (uint8_t)(r->shade.shading == ZS_SHADE_GOURAUD && m->vertex_colors != 0);
+    /* (without ZS_HAS_GOURAUD shading is flat and fog off: zs_frame_shading) */
+    c.vertex_light = (uint8_t)(ZS_HAS_GOURAUD && r->shade.shading == ZS_SHADE_GOURAUD && c.lit &&
+                               m->vertex_normals != 0);
+    c.vertex_color =
+        (uint8_t)(ZS_HAS_GOURAUD && r->shade.shading == ZS_SHADE_GOURAUD && m->vertex_colors != 0);
     c.tri_flags = ((c.vertex_light || c.vertex_color) ? ZS_TRI_MODULATE : 0u) |
-                  ((r->shade.fog.enabled && !c.tex_slot) ? ZS_TRI_FOG : 0u) | /* texture.c fogs */
+                  /* texture.c fogs */
+                  ((ZS_HAS_GOURAUD && r->shade.fog.enabled && !c.tex_slot) ? ZS_TRI_FOG : 0u) |
                   (c.tex_slot ? ZS_TRI_TEXTURED : 0u);
 
     /* vertices: transform all that fit the pool (capacity policy: the last
@@ -734,7 +767,8 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
     tag_base = tag0 % 65535u;
     tag_fast = tag0 <= UINT32_MAX - m->triangle_count; /* and t < 65535: uint16 count */
     r->priv.tag_counter += m->triangle_count;
-    if (inside && vfit == m->vertex_count && tag_fast && !r->priv.ranges) {
+    /* (a small build takes the loop below: the same outcomes and counts) */
+    if (!ZS_SMALL_ && inside && vfit == m->vertex_count && tag_fast && !r->priv.ranges) {
         r->stats.tris_submitted += m->triangle_count;
         setup_inside(&c, base, tag_base);
         LINES_NORMALS(&c, first, tag_base);
@@ -757,17 +791,16 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
         v1 = &pool[base + i1];
         v2 = &pool[base + i2];
         if ((v0->z | v1->z | v2->z) & ZS_VERT_UNPROJECTED) {
-            outcome = clip_and_setup(&c, base, t,
-                                     tag_fast ? tag_from_base(tag_base, t) : tag_of(tag0, t));
+            outcome = clip_and_setup(&c, base, t, DRAW_TAG(t));
         } else {
-            int64_t area2 = zs_area2_inline(v0, v1, v2);
+            /* (a small build calls setup.c's copy) */
+            int64_t area2 = ZS_SMALL_ ? zs_area2(v0, v1, v2) : zs_area2_inline(v0, v1, v2);
             if (area2 >= 0) /* culled before lighting the face */
                 outcome = ZS_SETUP_CULLED;
             else
                 outcome = zs_setup_triangle(r, (uint16_t)(base + i0), (uint16_t)(base + i1),
                                             (uint16_t)(base + i2), area2, face_color(&c, t),
-                                            tag_fast ? tag_from_base(tag_base, t)
-                                                     : tag_of(tag0, t));
+                                            DRAW_TAG(t));
         }
         count_outcome(&r->stats, outcome);
     }

@@ -230,7 +230,7 @@ zs_status zs_frame_begin(zs_renderer *r, const zs_camera *cam, zs_visibility mod
     if (ZS_HAS_ABUFFER)
         zs_abuffer_frame(r);
     memset(r->priv.buckets, 0xFF, (size_t)r->cfg.height * 2u);
-    if (r->priv.draw_starts)
+    if (ZS_HAS_MONO && r->priv.draw_starts)
         memset(r->priv.draw_starts, 0, ((size_t)r->cfg.max_triangles + 7u) / 8u);
     r->priv.state = ZS_STATE_OPEN;
     return ZS_OK;
@@ -383,9 +383,10 @@ zs_status zs_render_rows(zs_renderer *r, int y0, int rows, void *buf, size_t str
         r->priv.state = ZS_STATE_RENDERING;
     }
     for (y = r->priv.next_row; y < y0; y++) {
-        if (y < r->priv.line_next) /* hidden lines render a row ahead */
+        if (ZS_HAS_MONO && y < r->priv.line_next) /* hidden lines render a row ahead */
             continue;
-        if (r->priv.mode != ZS_MODE_WARNOCK) /* it keeps no state between rows */
+        /* Warnock mode keeps no state between rows */
+        if (!ZS_HAS_WARNOCK || r->priv.mode != ZS_MODE_WARNOCK)
             zs_raster_row(r, y, 0);
     }
     if (kind == ZS_ROWS_BYTES) {

@@ -70,8 +70,9 @@ void zs_project(const zs_renderer *r, int64_t xc, int64_t yc, int32_t w, int16_t
     uint32_t inv, d;
     int64_t nx, ny, q, zz;
     zs_proj p;
-    if (w < ((int32_t)1 << 28) && w >= r->cam.near_z && w <= r->cam.far_z && within7(xc, w) &&
-        within7(yc, w) && zs_proj_init(r, &p)) {
+    /* (a small build: this path only, the same results in fewer bytes) */
+    if (!ZS_SMALL_ && w < ((int32_t)1 << 28) && w >= r->cam.near_z && w <= r->cam.far_z &&
+        within7(xc, w) && within7(yc, w) && zs_proj_init(r, &p)) {
         zs_vert v;
         ZS_PROJECT_FAST(&p, (int32_t)xc, (int32_t)yc, w, &v, 0);
         *x = v.x;
@@ -254,7 +255,7 @@ int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, int
     t->v[0] = i0;
     t->v[1] = i1;
     t->v[2] = i2;
-    t->color = r->shade.format == ZS_FMT_ID16 ? tag : color;
+    t->color = (ZS_HAS_FORMATS || ZS_HAS_MONO) && r->shade.format == ZS_FMT_ID16 ? tag : color;
     t->next = bucket[row0];
     bucket[row0] = r->priv.n_tris;
     r->priv.n_tris++;

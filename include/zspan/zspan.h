@@ -198,6 +198,15 @@ extern "C" {
 #else
 #define ZS_HAS_LIGHTING 1
 #endif
+/* Internal to src/: 1 in a ZS_LEAN build, where the core takes the smaller of
+ * two paths that give the same results (one triangle-setup loop, one
+ * projection, no whole-mesh shortcuts): the same images and statistics in
+ * fewer bytes, for some more instructions. Not a switch of its own. */
+#ifdef ZS_LEAN
+#define ZS_SMALL_ 1
+#else
+#define ZS_SMALL_ 0
+#endif
 
 /* ------------------------------------------------------------------ */
 /* Fixed point                                                          */

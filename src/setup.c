@@ -193,32 +193,33 @@ static ZS_NOINLINE int misses_centres(const zs_renderer *r, const zs_vert *a, co
     return 1;
 }
 
+/* The bounding box of a triangle: a sorting network of the three, two
+ * compares each way. */
+static inline void box3(const zs_vert *a, const zs_vert *b, const zs_vert *c, int32_t *xmin,
+                        int32_t *xmax, int32_t *ymin, int32_t *ymax)
+{
+    int32_t ax = a->x, bx = b->x, cx = c->x, ay = a->y, by = b->y, cy = c->y;
+    int32_t lo = ax < bx ? ax : bx, hi = ax < bx ? bx : ax;
+    *xmin = cx < lo ? cx : lo;
+    *xmax = cx > hi ? cx : hi;
+    lo = ay < by ? ay : by;
+    hi = ay < by ? by : ay;
+    *ymin = cy < lo ? cy : lo;
+    *ymax = cy > hi ? cy : hi;
+}
+
 int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, int64_t area2,
                       uint32_t color, uint16_t tag)
 {
     const zs_vert *pool = r->priv.verts;
     const zs_vert *a = &pool[i0], *b = &pool[i1], *c = &pool[i2];
-    int32_t xmin, xmax, ymin, ymax, row0, row1, col0, col1, ax, bx, cx, ay, by, cy;
+    int32_t xmin, xmax, ymin, ymax, row0, row1, col0, col1;
     zs_tri *t;
     uint16_t *bucket = r->priv.buckets;
     /* counter-clockwise seen from the camera is clockwise with y down */
     if (area2 >= 0)
         return ZS_SETUP_CULLED;
-    ax = a->x;
-    bx = b->x;
-    cx = c->x;
-    ay = a->y;
-    by = b->y;
-    cy = c->y;
-    /* the box: a sorting network of the three, two compares each way */
-    xmin = ax < bx ? ax : bx;
-    xmax = ax < bx ? bx : ax;
-    xmin = cx < xmin ? cx : xmin;
-    xmax = cx > xmax ? cx : xmax;
-    ymin = ay < by ? ay : by;
-    ymax = ay < by ? by : ay;
-    ymin = cy < ymin ? cy : ymin;
-    ymax = cy > ymax ? cy : ymax;
+    box3(a, b, c, &xmin, &xmax, &ymin, &ymax);
     if (xmax <= 0 || ymax <= 0 || xmin >= 16 * (int32_t)r->cfg.width ||
         ymin >= 16 * (int32_t)r->cfg.height)
         return ZS_SETUP_REJECTED;
@@ -369,7 +370,6 @@ static ZS_INLINE_ALWAYS void plain_tri(plain_run *p, const uint16_t *idx, uint32
     } else
 #endif
     {
-        int32_t ax, bx, cx, ay, by, cy;
 #ifdef ZS_SPLIT_MUL
         /* simd here: differences below 2^14, the products in 32 bits */
         if (simd ? (b->x - a->x) * (c->y - a->y) - (c->x - a->x) * (b->y - a->y) >= 0
@@ -378,20 +378,7 @@ static ZS_INLINE_ALWAYS void plain_tri(plain_run *p, const uint16_t *idx, uint32
         if (back_face(a, b, c))
 #endif
             return; /* culled: counted at the end */
-        ax = a->x;
-        bx = b->x;
-        cx = c->x;
-        ay = a->y;
-        by = b->y;
-        cy = c->y;
-        xmin = ax < bx ? ax : bx;
-        xmax = ax < bx ? bx : ax;
-        xmin = cx < xmin ? cx : xmin;
-        xmax = cx > xmax ? cx : xmax;
-        ymin = ay < by ? ay : by;
-        ymax = ay < by ? by : ay;
-        ymin = cy < ymin ? cy : ymin;
-        ymax = cy > ymax ? cy : ymax;
+        box3(a, b, c, &xmin, &xmax, &ymin, &ymax);
     }
     if (xmax <= 0 || ymax <= 0 || xmin >= 16 * p->width || ymin >= 16 * p->height) {
         p->rejected++;

@@ -328,10 +328,59 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
     int32_t min_cross = NO_CROSS;  /* first column where a member overtakes the top */
     uint16_t others_lo = 0xFFFFu;  /* at most the smallest zlo of the other members */
     int ns = 0;                    /* members of the in-polygon set */
+    int odd = 0;                   /* triangles whose counter is 255: right edge met
+                                      first (a span inverted by rounding) */
     walk_ctx w;
     w.r = r;
     w.row = row;
     w.y = y;
+single:
+    /* A single-layer stretch: the set holds at most the top, no crossing is
+     * pending and every other counter is 0 (a convex mesh's rows are this
+     * whole: one triangle hands over to the next at each edge). The same
+     * spans as the general walk below, with none of its bookkeeping; it
+     * takes over at the first event that would make a second member or
+     * meets a triangle that is not in the set. */
+    while (p != end) {
+        const zs_edge *const e = &edges[*p];
+        const int32_t t = edge_side(&e->trail), l = edge_side(&e->lead);
+        int32_t x = e->x;
+        zs_active *after = top;
+        if (t >= 0) {
+            if (&act[t] != top)
+                break;
+            after = 0;
+        }
+        if (l >= 0) {
+            if (after)
+                break;
+            after = &act[l];
+        }
+        p++;
+        if (x > cur) {
+            if (x > width)
+                x = width;
+            if (top != pend_top) { /* spans of one surface merge */
+                if (cur > pend_x0)
+                    write_span(&w, pend_top, pend_x0, cur);
+                pend_top = top;
+                pend_x0 = cur;
+            }
+            cur = x;
+        }
+        top = after;
+    }
+    /* the general walk's state for what the stretch leaves */
+    ns = 0;
+    if (top) {
+        top->inside = 1u;
+        top->set_pos = 0;
+        top->cross = NO_CROSS;
+        set[0] = (uint16_t)(top - act);
+        ns = 1;
+    }
+    min_cross = NO_CROSS;
+    others_lo = 0xFFFFu;
     while (p != end) {
         const zs_edge *const e = &edges[*p++];
         int32_t t, l; /* the edge's triangles, < 0 for none */
@@ -381,6 +430,8 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
                     top = 0;
                 } else if (top && a->cross == min_cross && min_cross != NO_CROSS)
                     min_cross = next_cross(r, ns, top);
+            } else {
+                odd++;
             }
         }
         if (l >= 0) {
@@ -405,8 +456,12 @@ void zs_span_row(zs_renderer *r, int y, uint8_t *row)
                     zs_active *b = a;
                     b_vs_top(b);
                 }
+            } else {
+                odd--;
             }
         }
+        if (ns == 0 && odd == 0)
+            goto single; /* the set is empty again, every counter 0 */
     }
     ADVANCE_TO(width); /* the rest of the row */
     if (width > pend_x0)

@@ -370,7 +370,8 @@ single:
         }
         top = after;
     }
-    /* the general walk's state for what the stretch leaves */
+    /* the general walk's state for what the stretch leaves (the top's
+     * counter reads 0 in the stretch, 1 here) */
     ns = 0;
     if (top) {
         top->inside = 1u;
@@ -460,8 +461,15 @@ single:
                 odd--;
             }
         }
-        if (ns == 0 && odd == 0)
-            goto single; /* the set is empty again, every counter 0 */
+        if (ns <= 1 && odd == 0) {
+            /* one member or none, every other counter 0: a single-layer
+             * stretch again (its top's counter reads 0 there) */
+            if (ns) {
+                top = &act[set[0]];
+                top->inside = 0u;
+            }
+            goto single;
+        }
     }
     ADVANCE_TO(width); /* the rest of the row */
     if (width > pend_x0)

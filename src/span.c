@@ -200,12 +200,13 @@ static ZS_NOINLINE void put_span(const walk_ctx *w, const zs_active *a, int32_t 
 /* put_span, with the common case in line: a flat surface in a 2-byte
  * format is one fill of a packed pair, no call. */
 static ZS_INLINE_ALWAYS void write_span(const walk_ctx *w, const zs_active *a, int32_t x0,
-                                        int32_t x1)
+                                        int32_t x1, const int flat2)
 {
 #if defined(__OPTIMIZE_SIZE__) /* one copy: smaller, and no slower there */
+    (void)flat2;
     put_span(w, a, x0, x1);
 #else
-    if (w->r->priv.bpp == 2 && !(a && (a->flags & ZS_ACT_GOURAUD))) {
+    if (flat2 || (w->r->priv.bpp == 2 && !(a && (a->flags & ZS_ACT_GOURAUD)))) {
         /* a constant bpp: zs_fill_flat folds to the 2-byte fill */
         zs_fill_flat(w->row, x0, x1, 2u, a ? a->pixel : w->r->priv.background);
         w->r->stats.spans++;
@@ -290,7 +291,7 @@ static inline int32_t edge_side(const uint16_t *f)
                 for (;;) {                                                                 \
                     if (top != pend_top) { /* spans of one surface merge */                \
                         if (cur > pend_x0)                                                 \
-                            write_span(&w, pend_top, pend_x0, cur);                        \
+                            write_span(&w, pend_top, pend_x0, cur, flat2);                        \
                         pend_top = top;                                                    \
                         pend_x0 = cur;                                                     \
                     }                                                                      \
@@ -304,7 +305,7 @@ static inline int32_t edge_side(const uint16_t *f)
                 }                                                                          \
             } else if (top != pend_top) { /* spans of one surface merge */                 \
                 if (cur > pend_x0)                                                         \
-                    write_span(&w, pend_top, pend_x0, cur);                                \
+                    write_span(&w, pend_top, pend_x0, cur, flat2);                                \
                 pend_top = top;                                                            \
                 pend_x0 = cur;                                                             \
             }                                                                              \
@@ -312,7 +313,9 @@ static inline int32_t edge_side(const uint16_t *f)
         }                                                                                  \
     } while (0)
 
-void zs_span_row(zs_renderer *r, int y, uint8_t *row)
+/* The walk of one row; flat2: every span is a flat fill of a 2-byte format
+ * (a constant, so that copy has no per-span test). */
+static ZS_INLINE_ALWAYS void span_row(zs_renderer *r, int y, uint8_t *row, const int flat2)
 {
     zs_active *const act = r->priv.active;
     const zs_edge *const edges = r->priv.edges;
@@ -362,7 +365,7 @@ single:
                 x = width;
             if (top != pend_top) { /* spans of one surface merge */
                 if (cur > pend_x0)
-                    write_span(&w, pend_top, pend_x0, cur);
+                    write_span(&w, pend_top, pend_x0, cur, flat2);
                 pend_top = top;
                 pend_x0 = cur;
             }
@@ -473,6 +476,19 @@ single:
     }
     ADVANCE_TO(width); /* the rest of the row */
     if (width > pend_x0)
-        write_span(&w, pend_top, pend_x0, width);
+        write_span(&w, pend_top, pend_x0, width, flat2);
     r->stats.pixels_shaded += (uint32_t)width;
+}
+
+void zs_span_row(zs_renderer *r, int y, uint8_t *row)
+{
+#if defined(__OPTIMIZE_SIZE__) /* one copy */
+    span_row(r, y, row, 0);
+#else
+    /* without colour planes no triangle is Gouraud-shaded */
+    if (r->priv.bpp == 2 && !r->priv.acolor)
+        span_row(r, y, row, 1);
+    else
+        span_row(r, y, row, 0);
+#endif
 }

@@ -57,6 +57,19 @@
  *     checked against the ray caster on the same frames, and Warnock's
  *     image (which takes neither) must equal both modes'.
  *
+ *  5. Single-layer stretches (span.c: the walk without the in-polygon set
+ *     while at most one triangle is inside, handing over to the general walk
+ *     at an overlap or at a rounding inversion, and back when one member or
+ *     none is left): one grid layer (random diagonals, so most edges are
+ *     shared hand-overs), slivers a fraction of a pixel wide at every angle
+ *     (many rows see their right edge before their left: the counter that
+ *     goes to 255), a few loose triangles in front of, behind and through
+ *     the layer (stretches end and start again on the same row), on
+ *     renderers with and without colour planes (ZS_CFG_FLAT_ONLY, whose
+ *     RGB565 frames take the walk's flat 2-byte copy): the ray caster in
+ *     ID16, span == zline in ID16, RGB565 and RGB888 (Gouraud where planes
+ *     exist), and the colour-plane renderer's image == the flat one's.
+ *
  * Near ties (ZT_TIE_TOL) are left out of the ray-caster comparisons as in
  * the other suites; their number is printed and must stay under 1%.
  */
@@ -1322,6 +1335,119 @@ static void test_layers(void **state)
     ZT_CHECK(bad == 0, "%lu pixels disagree with the ray caster", bad);
 }
 
+/* ================= 5. single-layer stretches ================= */
+
+#define SL_W 112
+#define SL_H 80
+#define SL_SCENES 200
+
+static unsigned long g_sl_scenes, g_sl_tris, g_sl_slivers, g_sl_loose, g_sl_bytes;
+
+/* A triangle a fraction of a pixel wide: from (x, y) length len at angle
+ * ang, its third vertex off the middle by width pixels, at depth d. */
+static void sl_sliver(zt_rng *g, zt_scene *sc, double d)
+{
+    double x = zt_uniform(g, -8, SL_W + 8), y = zt_uniform(g, -8, SL_H + 8);
+    double ang = zt_uniform(g, 0, 6.283185307179586), len = zt_uniform(g, 4, 60);
+    double wid = zt_uniform(g, 0.02, 0.7), dx = cos(ang), dy = sin(ang);
+    double d2 = d * zt_uniform(g, 0.98, 1.02);
+    int a = zt_scene_vertex_px(sc, x, y, d, rand_color(g));
+    int b = zt_scene_vertex_px(sc, x + len * dx, y + len * dy, d2, rand_color(g));
+    int c = zt_scene_vertex_px(sc, x + 0.5 * len * dx - wid * dy, y + 0.5 * len * dy + wid * dx,
+                               0.5 * (d + d2), rand_color(g));
+    zt_scene_tri_front(sc, a, b, c, rand_color(g));
+}
+
+static void test_single_layer(void **state)
+{
+    (void)state;
+    unsigned long bad = 0;
+    zt_rng g;
+    zt_rng_seed(&g, SEED ^ 0x5E);
+    zt_ctx c, cf;
+    ctx_init_flags(&c, SL_W, SL_H, 1500, 3000, 1500, 0);
+    ctx_init_flags(&cf, SL_W, SL_H, 1500, 3000, 1500, ZS_CFG_FLAT_ONLY);
+    zs_camera cam;
+    zt_camera_std(&cam, ZS_FX(1) / 2, ZS_FX(60));
+    zt_scene sc;
+    zt_scene_init(&sc, SL_W, SL_H, 512);
+    zt_gframe *f = zt_gframe_new(SL_W, SL_H);
+    size_t cap = (size_t)SL_W * SL_H * 3;
+    uint8_t *ref = malloc(cap), *img = malloc(cap);
+    ZT_CHECK(ref && img, "out of memory");
+    for (int k = 0; k < SL_SCENES; k++) {
+        zt_scene_reset(&sc);
+        double d = zt_uniform(&g, 1.5, 4);
+        int nx = 2 + (int)zt_below(&g, 9), ny = 2 + (int)zt_below(&g, 7);
+        double cw = zt_uniform(&g, 4, 2.0 * SL_W / nx), ch = zt_uniform(&g, 4, 2.0 * SL_H / ny);
+        double tilt = zt_below(&g, 2) ? zt_uniform(&g, -0.5, 0.5) : 0;
+        lg_grid(&g, &sc, zt_uniform(&g, -SL_W * 0.6, SL_W * 0.4), zt_uniform(&g, -SL_H * 0.6, SL_H * 0.4),
+                cw, ch, nx, ny, d, tilt, -tilt, 0);
+        /* slivers in the layer's depth range (in front, behind or level) */
+        int ns = (int)zt_below(&g, 24);
+        for (int i = 0; i < ns; i++)
+            sl_sliver(&g, &sc, d * zt_uniform(&g, 0.7, 1.3));
+        g_sl_slivers += (unsigned long)ns;
+        /* loose triangles: a second layer here and there, or none */
+        int nl = (int)zt_below(&g, 4);
+        for (int i = 0; i < nl; i++) {
+            double x = zt_uniform(&g, -10, SL_W), y = zt_uniform(&g, -10, SL_H);
+            double dl = d * zt_uniform(&g, 0.6, 1.4), sz = zt_uniform(&g, 3, 30);
+            int a = zt_scene_vertex_px(&sc, x, y, dl, rand_color(&g));
+            int b = zt_scene_vertex_px(&sc, x + sz, y + zt_uniform(&g, -sz, sz),
+                                       dl * zt_uniform(&g, 0.8, 1.25), rand_color(&g));
+            int cc = zt_scene_vertex_px(&sc, x + zt_uniform(&g, -sz, sz), y + sz,
+                                        dl * zt_uniform(&g, 0.8, 1.25), rand_color(&g));
+            zt_scene_tri_front(&sc, a, b, cc, rand_color(&g));
+        }
+        g_sl_loose += (unsigned long)nl;
+        zs_mesh m = zt_scene_mesh(&sc, 1, 1);
+        char what[120];
+        snprintf(what, sizeof what, "single-layer scene %d (%d slivers, %d loose, seed %llx)", k, ns,
+                 nl, (unsigned long long)SEED);
+        zt_guarded_frame(&c, &cam, ZS_MODE_SPAN, &m, 1, NULL, f, 1 + (int)zt_below(&g, 9));
+        ZT_ST(f->draw_st, ZS_OK);
+        ZT_CHECK(f->st.tris_dropped == 0 && f->st.records_skipped == 0, "%s: pools too small", what);
+        bad += zt_vs_raycast(f, what);
+        memcpy(ref, f->img, (size_t)SL_W * SL_H * 2);
+        zs_shade_params sp = shade(ZS_FMT_ID16, ZS_SHADE_FLAT, 0);
+        render(&c, &cam, ZS_MODE_ZLINE, &sp, &m, 1, NULL, NULL, img, SL_H, NULL);
+        same_image(ref, img, SL_W, SL_H, ZS_FMT_ID16, what);
+        render(&cf, &cam, ZS_MODE_SPAN, &sp, &m, 1, NULL, NULL, img, 1 + (int)zt_below(&g, 9), NULL);
+        same_image(ref, img, SL_W, SL_H, ZS_FMT_ID16, what);
+        static const zs_format fmts[2] = {ZS_FMT_RGB565, ZS_FMT_RGB888};
+        for (int fi = 0; fi < 2; fi++) {
+            zs_color bg = rand_color(&g);
+            /* flat: both renderers, span against zline */
+            sp = shade(fmts[fi], ZS_SHADE_FLAT, bg);
+            render(&c, &cam, ZS_MODE_ZLINE, &sp, &m, 1, NULL, NULL, ref, SL_H, NULL);
+            render(&cf, &cam, ZS_MODE_SPAN, &sp, &m, 1, NULL, NULL, img, 1 + (int)zt_below(&g, 9),
+                   NULL);
+            same_image(ref, img, SL_W, SL_H, sp.format, what);
+            render(&c, &cam, ZS_MODE_SPAN, &sp, &m, 1, NULL, NULL, img, 1 + (int)zt_below(&g, 9),
+                   NULL);
+            same_image(ref, img, SL_W, SL_H, sp.format, what);
+            /* Gouraud where colour planes exist */
+            sp = shade(fmts[fi], ZS_SHADE_GOURAUD, bg);
+            render(&c, &cam, ZS_MODE_ZLINE, &sp, &m, 1, NULL, NULL, ref, SL_H, NULL);
+            render(&c, &cam, ZS_MODE_SPAN, &sp, &m, 1, NULL, NULL, img, 1 + (int)zt_below(&g, 9),
+                   NULL);
+            same_image(ref, img, SL_W, SL_H, sp.format, what);
+            g_sl_bytes += 3u * (size_t)SL_W * SL_H * zs_format_bytes(sp.format);
+        }
+        g_sl_scenes++;
+        g_sl_tris += sc.nt;
+    }
+    free(ref);
+    free(img);
+    zt_gframe_free(f);
+    zt_scene_free(&sc);
+    zt_ctx_free(&c);
+    zt_ctx_free(&cf);
+    g_raycast_bad += bad;
+    ZT_CHECK(bad == 0, "%lu pixels disagree with the ray caster", bad);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1329,6 +1455,7 @@ int main(void)
         cmocka_unit_test(test_count_sort),
         cmocka_unit_test(test_planes_per_row),
         cmocka_unit_test(test_layers),
+        cmocka_unit_test(test_single_layer),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
 
@@ -1344,14 +1471,16 @@ int main(void)
            "shows another triangle at the bottom than at the top, %lu Gouraud pixels (max deviation %.3f, %lu channels beyond 0.5) "
            "and %lu flat pixels against the barycentric reference; layers: %lu scenes (%lu "
            "triangles, %lu duplicated layers, %lu exact-duplicate tie pixels), %lu bytes "
-           "compared; %lu renders; ray caster: %lu of %lu covered pixels excluded as near ties, "
+           "compared; single layer: %lu scenes %dx%d (%lu triangles, %lu slivers, %lu loose), %lu "
+           "bytes compared; %lu renders; ray caster: %lu of %lu covered pixels excluded as near ties, "
            "%lu disagreeing; %d failed\n",
            (unsigned long long)SEED, g_bx_scenes, g_bx_redrawn, g_bx_probes, g_bx_inside,
            g_bx_outside, g_bx_fast, g_bx_exact_near, g_bx_exact_far, g_bx_slides, g_cs_scenes,
            CS_W, CS_H, g_cs_tris, g_cs_max_batch, g_cs_left, g_cs_right, g_cs_bytes, g_pl_scenes,
            PL_W, PL_H, g_pl_tris, g_pl_needles, g_pl_steep, g_pl_flips, g_pl_gouraud_px,
            g_pl_maxdev, g_pl_off_half, g_pl_flat_px, g_lg_scenes, g_lg_tris, g_lg_dups,
-           g_lg_dup_px, g_lg_bytes, g_renders, zt_tot.excluded, zt_tot.px, g_raycast_bad, rc);
+           g_lg_dup_px, g_lg_bytes, g_sl_scenes, SL_W, SL_H, g_sl_tris, g_sl_slivers, g_sl_loose,
+           g_sl_bytes, g_renders, zt_tot.excluded, zt_tot.px, g_raycast_bad, rc);
     fflush(stdout);
     return rc;
 }

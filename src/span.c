@@ -104,9 +104,11 @@ static int32_t overtake(const zs_renderer *r, const zs_active *j, const zs_activ
 /* The top by depth ranges alone, or NULL: the member whose range ends first
  * wins outright if it ends before every other range starts (typical where
  * surfaces are apart in depth); then no plane is evaluated and nothing can
- * overtake it. *others_lo: the smallest zlo of the other members. Every
- * member's crossing is reset on the way. */
-static zs_active *range_top(zs_active *act, const uint16_t *set, int ns, uint16_t *others_lo)
+ * overtake it. *others_lo: the smallest zlo of the other members; *min_hi:
+ * the smallest zhi (a member whose zlo is not below it cannot be nearest).
+ * Every member's crossing is reset on the way. */
+static zs_active *range_top(zs_active *act, const uint16_t *set, int ns, uint16_t *others_lo,
+                            uint16_t *min_hi)
 {
     zs_active *near = 0;
     const zs_active *lo1_of = 0;
@@ -127,6 +129,7 @@ static zs_active *range_top(zs_active *act, const uint16_t *set, int ns, uint16_
         }
     }
     *others_lo = near == lo1_of ? lo2 : lo1;
+    *min_hi = near ? near->zhi : 0xFFFFu;
     return near && near->zhi <= *others_lo ? near : 0;
 }
 
@@ -146,27 +149,35 @@ static ZS_NOINLINE zs_active *retop(const walk_ctx *w, int ns, int32_t x)
     zs_active *act = r->priv.active;
     zs_active_plane *pl = r->priv.aplane;
     const uint16_t *set = r->priv.in_set;
-    uint16_t others_lo;
-    zs_active *best = range_top(act, set, ns, &others_lo);
+    uint16_t others_lo, min_hi;
+    zs_active *best = range_top(act, set, ns, &others_lo, &min_hi);
     int32_t min_cross = NO_CROSS, y = w->y;
     int64_t bz = 0;
+    uint32_t evals = 0;
     int k;
     if (best) { /* nearer than every other member wherever they meet */
         r->priv.others_lo = others_lo;
         r->priv.min_cross = NO_CROSS;
         return best;
     }
+    /* the nearest at x: only a member whose range starts below min_hi can
+     * be it (the member whose range ends there is nearer than the rest) */
     for (k = 0; k < ns; k++) {
         zs_active *a = &act[set[k]];
         zs_active_plane *p = &pl[set[k]];
-        int64_t z = depth_at(r, a, p, x, y);
+        int64_t z;
+        if (a->zlo >= min_hi)
+            continue;
+        z = depth_at(r, a, p, x, y);
         p->zcur = z;
+        evals++;
         if (!best || nearer(z, a, bz, best)) {
             best = a;
             bz = z;
         }
     }
-    r->stats.depth_evals += (uint32_t)ns;
+    /* each other member's crossing with it: none for those behind it
+     * wherever they meet, which need no depth at all */
     others_lo = 0xFFFFu;
     for (k = 0; k < ns; k++) {
         zs_active *a = &act[set[k]];
@@ -174,11 +185,20 @@ static ZS_NOINLINE zs_active *retop(const walk_ctx *w, int ns, int32_t x)
             continue;
         if (a->zlo < others_lo)
             others_lo = a->zlo;
-        a->cross = always_nearer(best, a) ? NO_CROSS
-                                          : overtake(r, a, best, x, pl[set[k]].zcur, bz);
+        if (always_nearer(best, a)) {
+            a->cross = NO_CROSS;
+        } else {
+            zs_active_plane *p = &pl[set[k]];
+            if (a->zlo >= min_hi) {
+                p->zcur = depth_at(r, a, p, x, y);
+                evals++;
+            }
+            a->cross = overtake(r, a, best, x, p->zcur, bz);
+        }
         if (a->cross < min_cross)
             min_cross = a->cross;
     }
+    r->stats.depth_evals += evals;
     r->priv.min_cross = min_cross;
     r->priv.others_lo = others_lo;
     return best;

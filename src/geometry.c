@@ -260,18 +260,34 @@ static uint32_t face_color(const draw_ctx *c, uint32_t t)
     return col | (c->tri_flags << 24);
 }
 
-/* Is every one of the first n vertices inside near, far and the guard band?
- * Decided from the 8 corners of their bounding box (fast path only): w is a
+/* Is every position in the box lx..hx, ly..hy, lz..hz inside near, far and
+ * the guard band? Decided from its 8 corners (fast path only): w is a
  * rounded affine function of the position, so it lies within the corners'
  * range; xc - guard * w may exceed the corners' values by the roundings of
  * xc and w (under 1 + guard units), hence the margin. */
 #define INSIDE_MARGIN (2 * ZS_GUARD_MAX)
-static ZS_NOINLINE int box_inside(const draw_ctx *c, uint32_t n)
+static int corners_inside(const draw_ctx *c, int32_t lx, int32_t ly, int32_t lz, int32_t hx,
+                          int32_t hy, int32_t hz)
 {
     const zs_renderer *r = c->r;
+    int k;
+    for (k = 0; k < 8; k++) {
+        int64_t xc, yc, w, gw;
+        fast_clip(c, (k & 1) ? hx : lx, (k & 2) ? hy : ly, (k & 4) ? hz : lz, &xc, &yc, &w);
+        if (w < r->cam.near_z || w > r->cam.far_z)
+            return 0;
+        gw = r->priv.guard * w - INSIDE_MARGIN;
+        if (xc < -gw || xc > gw || yc < -gw || yc > gw)
+            return 0;
+    }
+    return 1;
+}
+
+/* Is every one of the first n vertices inside? (Their bounding box's.) */
+static ZS_NOINLINE int box_inside(const draw_ctx *c, uint32_t n)
+{
     const int16_t *p = c->mesh->positions, *end = p + 3u * n;
     int32_t lx, ly, lz, hx, hy, hz; /* scalars: the scan stays in registers */
-    int k;
     if (!c->fast || n == 0)
         return 0;
     lx = hx = p[0];
@@ -286,16 +302,7 @@ static ZS_NOINLINE int box_inside(const draw_ctx *c, uint32_t n)
         lz = z < lz ? z : lz;
         hz = z > hz ? z : hz;
     }
-    for (k = 0; k < 8; k++) {
-        int64_t xc, yc, w, gw;
-        fast_clip(c, (k & 1) ? hx : lx, (k & 2) ? hy : ly, (k & 4) ? hz : lz, &xc, &yc, &w);
-        if (w < r->cam.near_z || w > r->cam.far_z)
-            return 0;
-        gw = r->priv.guard * w - INSIDE_MARGIN;
-        if (xc < -gw || xc > gw || yc < -gw || yc > gw)
-            return 0;
-    }
-    return 1;
+    return corners_inside(c, lx, ly, lz, hx, hy, hz);
 }
 
 /* The clip rows of a fast draw for project_all, with the translations and
@@ -368,8 +375,8 @@ static ZS_INLINE_ALWAYS int32_t inside_row(const inside_rows *ir, int k, int32_t
  * box_inside tells from the bounding box, here from each vertex: the same
  * vertices are projected either way, and an inside draw's triangles go the
  * same way as the per-triangle loop's). */
-static ZS_NOINLINE int project_all(const draw_ctx *c, const inside_rows *ir, const zs_proj *p,
-                                   zs_vert *v, uint32_t n)
+static ZS_INLINE_ALWAYS int project_run(const draw_ctx *c, const inside_rows *ir,
+                                         const zs_proj *p, zs_vert *v, uint32_t n, int checked)
 {
     const zs_renderer *r = c->r;
     const int16_t *pos = c->mesh->positions, *end = pos + 3u * n;
@@ -396,19 +403,36 @@ static ZS_NOINLINE int project_all(const draw_ctx *c, const inside_rows *ir, con
         w = inside_row(ir, 2, px, py, pz);
 #endif
         /* near <= w <= far < 2^29, |xc|, |yc| <= guard * w < 2^31, by
-         * differences mod 2^32 */
-        if ((uint32_t)w - near_z > depth)
-            goto out;
-        gw = guard * (uint32_t)w;
-        if ((uint32_t)xc + gw > 2u * gw || (uint32_t)yc + gw > 2u * gw)
-            goto out;
-        ZS_PROJECT_FAST(p, xc, yc, w, v, 1);
+         * differences mod 2^32 (known for every int16 position where not
+         * checked) */
+        if (checked) {
+            if ((uint32_t)w - near_z > depth)
+                goto out;
+            gw = guard * (uint32_t)w;
+            if ((uint32_t)xc + gw > 2u * gw || (uint32_t)yc + gw > 2u * gw)
+                goto out;
+            ZS_PROJECT_FAST(p, xc, yc, w, v, 1);
+        } else {
+            ZS_PROJECT_NARROW(p, xc, yc, w, v);
+        }
         continue;
     out:
         v->z = ZS_VERT_UNPROJECTED;
         outside = 1;
     }
     return !outside;
+}
+
+/* project_run, without a test per vertex where the whole int16 cube of
+ * positions is inside near, far and the guard band (box_inside's test of
+ * its corners: a mesh small on the screen), and depth_scale is below 2^32
+ * (near below 3/4 of far). */
+static ZS_NOINLINE int project_all(const draw_ctx *c, const inside_rows *ir, const zs_proj *p,
+                                   zs_vert *v, uint32_t n)
+{
+    if (p->ds_hi == 0 && corners_inside(c, -32768, -32768, -32768, 32767, 32767, 32767))
+        return project_run(c, ir, p, v, n, 0);
+    return project_run(c, ir, p, v, n, 1);
 }
 
 /* Vertices base .. base + n - 1 of the pool from the mesh's first n. Out of

@@ -560,8 +560,8 @@ static inline int32_t zs_s32(uint32_t u)
  * need no clamp, as |xc| * inv / 2^(33 - s) <= guard * 2^28 (inv <= 2^61 /
  * (w 2^s)) puts x within hw +- guard * hw, inside +-(guard + 1) 8 width <=
  * 32767 (the guard's definition, renderer.c), and y likewise. */
-static inline void zs_project_fast(const zs_proj *p, int32_t xc, int32_t yc, int32_t w,
-                                   zs_vert *v, int inside)
+static ZS_INLINE_ALWAYS void zs_project_body(const zs_proj *p, int32_t xc, int32_t yc,
+                                              int32_t w, zs_vert *v, int inside, int narrow)
 {
     uint32_t d, inv, q, m, zz;
     unsigned s = zs_norm_shift((uint32_t)w, &d); /* 2..30 */
@@ -577,7 +577,10 @@ static inline void zs_project_fast(const zs_proj *p, int32_t xc, int32_t yc, int
     ny = zs_s32(zs_shr64_lo((uint64_t)zs_mul_su32(yc, inv), 33u - s));
     q = zs_shr64_lo(zs_umul32(p->near_z, inv), 31u - s); /* near / w, Q30, <= 2^30 */
     m = 0x40000000u - q;
-    dz = zs_umul32(m, p->ds_lo) + ((uint64_t)(m * p->ds_hi) << 32);
+    if (narrow) /* ds_hi is 0 */
+        dz = zs_umul32(m, p->ds_lo);
+    else
+        dz = zs_umul32(m, p->ds_lo) + ((uint64_t)(m * p->ds_hi) << 32);
     zz = zs_shr64_lo(dz, 30); /* under 2^30 + 16 for w <= far */
     x = (int32_t)zs_asr64(p->xk + zs_mul_32x16(nx, p->hw), 28);
     y = (int32_t)zs_asr64(p->yk + zs_mul_32x16(ny, p->nhh), 28);
@@ -590,14 +593,23 @@ static inline void zs_project_fast(const zs_proj *p, int32_t xc, int32_t yc, int
     v->z = zz > 0x40000000u ? 0x40000000u : zz;
 }
 
+static inline void zs_project_fast(const zs_proj *p, int32_t xc, int32_t yc, int32_t w,
+                                   zs_vert *v, int inside)
+{
+    zs_project_body(p, xc, yc, w, v, inside, 0);
+}
+
 /* Built for size, one copy out of line (setup.c) serves zs_project and the
- * draw loop; else inline in each. */
+ * draw loop; else inline in each. ZS_PROJECT_NARROW: a vertex inside the
+ * guard band where ds_hi is 0. */
 #if defined(__OPTIMIZE_SIZE__)
 void zs_project_fast_out(const zs_proj *p, int32_t xc, int32_t yc, int32_t w, zs_vert *v,
                          int inside);
 #define ZS_PROJECT_FAST zs_project_fast_out
+#define ZS_PROJECT_NARROW(p, xc, yc, w, v) zs_project_fast_out(p, xc, yc, w, v, 1)
 #else
 #define ZS_PROJECT_FAST zs_project_fast
+#define ZS_PROJECT_NARROW(p, xc, yc, w, v) zs_project_body(p, xc, yc, w, v, 1, 1)
 #endif
 
 /* ---- span fills (inline: they run once per span) ---- */

@@ -575,12 +575,14 @@ static ZS_INLINE_ALWAYS void zs_project_body(const zs_proj *p, int32_t xc, int32
     /* floor(xc * inv / 2^(33 - s)): xc / w in Q28 */
     nx = zs_s32(zs_shr64_lo((uint64_t)zs_mul_su32(xc, inv), 33u - s));
     ny = zs_s32(zs_shr64_lo((uint64_t)zs_mul_su32(yc, inv), 33u - s));
-    q = zs_shr64_lo(zs_umul32(p->near_z, inv), 31u - s); /* near / w, Q30, <= 2^30 */
-    m = 0x40000000u - q;
-    if (narrow) /* ds_hi is 0 */
-        dz = zs_umul32(m, p->ds_lo);
-    else
+    if (narrow) { /* ds_hi is 0 and near below 2^30: q by the same shift as nx */
+        q = zs_shr64_lo(zs_umul32(p->near_z << 2, inv), 33u - s);
+        dz = zs_umul32(0x40000000u - q, p->ds_lo);
+    } else {
+        q = zs_shr64_lo(zs_umul32(p->near_z, inv), 31u - s); /* near / w, Q30, <= 2^30 */
+        m = 0x40000000u - q;
         dz = zs_umul32(m, p->ds_lo) + ((uint64_t)(m * p->ds_hi) << 32);
+    }
     zz = zs_shr64_lo(dz, 30); /* under 2^30 + 16 for w <= far */
     x = (int32_t)zs_asr64(p->xk + zs_mul_32x16(nx, p->hw), 28);
     y = (int32_t)zs_asr64(p->yk + zs_mul_32x16(ny, p->nhh), 28);
@@ -601,7 +603,7 @@ static inline void zs_project_fast(const zs_proj *p, int32_t xc, int32_t yc, int
 
 /* Built for size, one copy out of line (setup.c) serves zs_project and the
  * draw loop; else inline in each. ZS_PROJECT_NARROW: a vertex inside the
- * guard band where ds_hi is 0. */
+ * guard band where ds_hi is 0 and near_z below 2^30. */
 #if defined(__OPTIMIZE_SIZE__)
 void zs_project_fast_out(const zs_proj *p, int32_t xc, int32_t yc, int32_t w, zs_vert *v,
                          int inside);

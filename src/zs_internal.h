@@ -504,14 +504,36 @@ static inline unsigned zs_norm_shift(uint32_t v, uint32_t *norm)
     *norm = v << s;
     return s;
 #else
-    unsigned s = 0, k;
-    for (k = 16; k > 0; k >>= 1)
-        if (v < ((uint32_t)1 << (31u - k))) {
-            v <<= k;
-            s += k;
-        }
+    /* unrolled, each step's test by a shift (no constant to load) */
+    unsigned s = 0;
+#define ZS_NORM_STEP(k)                                                                   \
+    if ((v >> (31u - (k))) == 0) {                                                        \
+        v <<= (k);                                                                        \
+        s += (k);                                                                         \
+    }
+    ZS_NORM_STEP(16u)
+    ZS_NORM_STEP(8u)
+    ZS_NORM_STEP(4u)
+    ZS_NORM_STEP(2u)
+    ZS_NORM_STEP(1u)
+#undef ZS_NORM_STEP
     *norm = v;
     return s;
+#endif
+}
+
+/* a * b for a, b <= 2^31: on Cortex-M0 the two middle products' sum then
+ * fits 32 bits (no carry out of it); inline where called. */
+static ZS_INLINE_ALWAYS uint64_t zs_umul31(uint32_t a, uint32_t b)
+{
+#ifdef ZS_SPLIT_MUL
+    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t ll = al * bl, mid = al * bh + ah * bl, hh = ah * bh;
+    uint32_t lo = ll + (mid << 16);
+    hh += (mid >> 16) + (lo < ll ? 1u : 0u);
+    return ((uint64_t)hh << 32) | lo;
+#else
+    return (uint64_t)a * b;
 #endif
 }
 
@@ -573,13 +595,21 @@ static ZS_INLINE_ALWAYS void zs_project_body(const zs_proj *p, int32_t xc, int32
     inv = zs_recip61_fast(d);
 #endif
     /* floor(xc * inv / 2^(33 - s)): xc / w in Q28 */
+#ifdef ZS_SPLIT_MUL
+    /* (the products inline: |xc|, |yc| < 2^31) */
+    nx = zs_s32(zs_shr64_lo(xc < 0 ? 0u - zs_umul31(0u - (uint32_t)xc, inv)
+                                   : zs_umul31((uint32_t)xc, inv), 33u - s));
+    ny = zs_s32(zs_shr64_lo(yc < 0 ? 0u - zs_umul31(0u - (uint32_t)yc, inv)
+                                   : zs_umul31((uint32_t)yc, inv), 33u - s));
+#else
     nx = zs_s32(zs_shr64_lo((uint64_t)zs_mul_su32(xc, inv), 33u - s));
     ny = zs_s32(zs_shr64_lo((uint64_t)zs_mul_su32(yc, inv), 33u - s));
+#endif
     if (narrow) { /* ds_hi is 0 and near below 2^30: q by the same shift as nx */
         q = zs_shr64_lo(zs_umul32(p->near_z << 2, inv), 33u - s);
         dz = zs_umul32(0x40000000u - q, p->ds_lo);
     } else {
-        q = zs_shr64_lo(zs_umul32(p->near_z, inv), 31u - s); /* near / w, Q30, <= 2^30 */
+        q = zs_shr64_lo(zs_umul31(p->near_z, inv), 31u - s); /* near / w, Q30, <= 2^30 */
         m = 0x40000000u - q;
         dz = zs_umul32(m, p->ds_lo) + ((uint64_t)(m * p->ds_hi) << 32);
     }

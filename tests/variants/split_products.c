@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* The products Cortex-M0 builds form from 32-bit halves (zs_mul64_small,
- * zs_umul32, zs_smul32 with ZS_SPLIT_PRODUCTS) must equal plain 64-bit
+ * zs_umul32, zs_umul31, zs_smul32 with ZS_SPLIT_PRODUCTS) must equal plain 64-bit
  * products, zs_udiv64_32 and zs_recip61 (by reciprocals there) the 64-bit
  * quotients, and a core built with them must render what the plain core does.
  *
@@ -69,7 +69,17 @@ static void check_helpers(void)
         check(zs_umul32(u, v) == (uint64_t)u * v, "zs_umul32", (long long)u, (long long)v);
         check(zs_umul32(0xFFFFFFFFu, v) == 0xFFFFFFFFull * v, "zs_umul32", -1, (long long)v);
         check(zs_smul32(s, t) == (int64_t)s * t, "zs_smul32", s, t);
+        /* zs_umul31: both operands at most 2^31 */
+        u = (uint32_t)rnd() % 0x80000001u;
+        v = (k & 1) ? 0x80000000u - (uint32_t)(rnd() & 0xFFFFu) : (uint32_t)rnd() % 0x80000001u;
+        check(zs_umul31(u, v) == (uint64_t)u * v, "zs_umul31", (long long)u, (long long)v);
     }
+    check(zs_umul31(0x80000000u, 0x80000000u) == 0x4000000000000000ull, "zs_umul31", 1, 1);
+    check(zs_umul31(0x7FFFFFFFu, 0x80000000u) == 0x7FFFFFFFull << 31, "zs_umul31", 2, 2);
+    check(zs_umul31(0x7FFFFFFFu, 0x7FFFFFFFu) == 0x7FFFFFFFull * 0x7FFFFFFFull, "zs_umul31", 3, 3);
+    check(zs_umul31(0x8000FFFFu & 0x7FFFFFFFu, 0x7FFFFFFFu) ==
+              (uint64_t)(0x8000FFFFu & 0x7FFFFFFFu) * 0x7FFFFFFFu,
+          "zs_umul31", 4, 4);
     /* zs_udiv64_32 (on Cortex-M0 by a reciprocal of v's high half): every
      * high half of the divisor, then random dividends and divisors */
     for (k = 0; k < (1 << 15); k++) {

@@ -503,6 +503,15 @@ static inline unsigned zs_norm_shift(uint32_t v, uint32_t *norm)
     unsigned s = (unsigned)__builtin_clz(v) - 1u;
     *norm = v << s;
     return s;
+#elif ZS_SMALL_
+    unsigned s = 0, k;
+    for (k = 16; k > 0; k >>= 1)
+        if (v < ((uint32_t)1 << (31u - k))) {
+            v <<= k;
+            s += k;
+        }
+    *norm = v;
+    return s;
 #else
     /* unrolled, each step's test by a shift (no constant to load) */
     unsigned s = 0;

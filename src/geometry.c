@@ -836,14 +836,14 @@ static ZS_NOINLINE int indices_valid(const uint16_t *idx, uint32_t tris, uint32_
 #if defined(__ARM_FEATURE_SIMD32) && defined(ZS_WORD_STORES)
     /* Cortex-M4: two indices a word, both against last at once (usub16 sets
      * a lane's GE flag where index <= last, sel keeps bad's lane there and
-     * takes all ones elsewhere) */
+     * takes all ones elsewhere), four words a load-multiple */
     if (((uintptr_t)idx & 2u) && idx != end)
         bad |= last - *idx++; /* to a word boundary */
     if (end - idx >= 2) {
         const zs_word_alias *w = (const zs_word_alias *)(const void *)idx;
         const zs_word_alias *wend = w + (end - idx) / 2;
         const uint32_t lim = last * 0x10001u, ones = 0xFFFFFFFFu; /* last <= 65534 */
-        if ((wend - w) & 1) { /* then pairs of words */
+        while ((wend - w) & 3) { /* then blocks of four words */
             uint32_t t;
             __asm__(".syntax unified\n"
                     "    usub16 %1, %2, %3\n"
@@ -853,18 +853,22 @@ static ZS_NOINLINE int indices_valid(const uint16_t *idx, uint32_t tris, uint32_
                     : "cc");
         }
         if (w != wend) {
-            uint32_t t, a, b;
+            uint32_t t;
             __asm__(".syntax unified\n"
-                    "1:  ldrd %[a], %[b], [%[w]], #8\n"
-                    "    usub16 %[t], %[lim], %[a]\n"
+                    "1:  ldmia %[w]!, {r4, r5, r6, r8}\n"
+                    "    usub16 %[t], %[lim], r4\n"
                     "    sel %[acc], %[acc], %[ones]\n"
-                    "    usub16 %[t], %[lim], %[b]\n"
+                    "    usub16 %[t], %[lim], r5\n"
+                    "    sel %[acc], %[acc], %[ones]\n"
+                    "    usub16 %[t], %[lim], r6\n"
+                    "    sel %[acc], %[acc], %[ones]\n"
+                    "    usub16 %[t], %[lim], r8\n"
                     "    sel %[acc], %[acc], %[ones]\n"
                     "    cmp %[w], %[end]\n"
                     "    bne 1b\n"
-                    : [w] "+r"(w), [acc] "+r"(acc), [t] "=&r"(t), [a] "=&r"(a), [b] "=&r"(b)
+                    : [w] "+r"(w), [acc] "+r"(acc), [t] "=&r"(t)
                     : [end] "r"(wend), [lim] "r"(lim), [ones] "r"(ones)
-                    : "cc", "memory");
+                    : "r4", "r5", "r6", "r8", "cc", "memory");
         }
         idx = (const uint16_t *)(const void *)wend;
     }

@@ -131,9 +131,40 @@ uint32_t zs_udiv64_32(uint32_t nh, uint32_t nl, uint32_t v)
     return (qh << 16) + ql;
 }
 
+#ifdef RECIP_DIGITS
+/* floor(2^61 / d) for d in [2^30, 2^31) in 32-bit products (one a projected
+ * vertex, so not the long division's two digits): with d = 2^15 dh + dl,
+ * x = floor(2^31 / dh) and r = 2^31 - dh x, y0 = 2^15 x is off by
+ * e = 2^61 - d y0 = 2^15 E, E = 2^15 r - dl x in (-2^31, 2^31), so
+ * eps = e / 2^61 = E / 2^46 and |eps| <= 2^-15. Then
+ * 2^61 / d = y0 (1 + eps + eps^2 + ...): y0 eps = x E / 2^31 and y0 eps^2
+ * = (y0 eps) E / 2^46, formed in 1/256 units; every truncation rounds down
+ * (as does the -16/256), so y is the floor or one short, which the 32-bit
+ * remainder 2^61 - d y in [0, 2d) settles. Checked for all 2^30 divisors
+ * against the division (tests/variants/split_products.c samples). */
+static uint32_t recip61_digits(uint32_t d)
+{
+    uint32_t dh = d >> 15, dl = d & 0x7FFFu;
+    uint32_t x = recip15(dh); /* (2^15, 2^16] */
+    uint32_t r = 0x80000000u - dh * x, el, rem, y;
+    int32_t e = zs_s32((r << 15) - dl * x), eh, a, t8, t2;
+    eh = zs_asr32(e, 16); /* e = 2^16 eh + el */
+    el = (uint32_t)e & 0xFFFFu;
+    a = (int32_t)x * eh; /* |x eh| <= 2^31 */
+    /* floor(x e / 2^23) = floor((a + floor(x el / 2^16)) / 2^7) */
+    t8 = zs_asr32(a, 7) + (int32_t)((((uint32_t)a & 0x7Fu) + ((x * el) >> 16)) >> 7);
+    t2 = zs_asr32(zs_asr32(t8, 9) * eh, 21); /* t8 e / 2^46, |t8 / 2^9| <= 2^15 */
+    y = (x << 15) + (uint32_t)zs_asr32(t8 + t2 - 16, 8);
+    rem = 0u - d * y; /* 2^61 - d y mod 2^32, exact: below 2d < 2^32 */
+    return rem >= d ? y + 1u : y;
+}
+#endif
+
 uint32_t zs_recip61(uint32_t d)
 {
-#ifdef ZS_SPLIT_MUL
+#ifdef RECIP_DIGITS
+    return recip61_digits(d);
+#elif defined(ZS_SPLIT_MUL)
     return zs_udiv64_32((uint32_t)1 << 30, 0u, d << 1); /* 2^62 / 2d */
 #else
     return zs_recip61_fast(d); /* one 32-bit division and products */

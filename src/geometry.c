@@ -260,18 +260,34 @@ static uint32_t face_color(const draw_ctx *c, uint32_t t)
     return col | (c->tri_flags << 24);
 }
 
-/* Is every one of the first n vertices inside near, far and the guard band?
- * Decided from the 8 corners of their bounding box (fast path only): w is a
+/* Is every position in the box lx..hx, ly..hy, lz..hz inside near, far and
+ * the guard band? Decided from its 8 corners (fast path only): w is a
  * rounded affine function of the position, so it lies within the corners'
  * range; xc - guard * w may exceed the corners' values by the roundings of
  * xc and w (under 1 + guard units), hence the margin. */
 #define INSIDE_MARGIN (2 * ZS_GUARD_MAX)
-static ZS_NOINLINE int box_inside(const draw_ctx *c, uint32_t n)
+static int corners_inside(const draw_ctx *c, int32_t lx, int32_t ly, int32_t lz, int32_t hx,
+                          int32_t hy, int32_t hz)
 {
     const zs_renderer *r = c->r;
+    int k;
+    for (k = 0; k < 8; k++) {
+        int64_t xc, yc, w, gw;
+        fast_clip(c, (k & 1) ? hx : lx, (k & 2) ? hy : ly, (k & 4) ? hz : lz, &xc, &yc, &w);
+        if (w < r->cam.near_z || w > r->cam.far_z)
+            return 0;
+        gw = r->priv.guard * w - INSIDE_MARGIN;
+        if (xc < -gw || xc > gw || yc < -gw || yc > gw)
+            return 0;
+    }
+    return 1;
+}
+
+/* Is every one of the first n vertices inside? (Their bounding box's.) */
+static ZS_NOINLINE int box_inside(const draw_ctx *c, uint32_t n)
+{
     const int16_t *p = c->mesh->positions, *end = p + 3u * n;
     int32_t lx, ly, lz, hx, hy, hz; /* scalars: the scan stays in registers */
-    int k;
     if (!c->fast || n == 0)
         return 0;
     lx = hx = p[0];
@@ -286,16 +302,7 @@ static ZS_NOINLINE int box_inside(const draw_ctx *c, uint32_t n)
         lz = z < lz ? z : lz;
         hz = z > hz ? z : hz;
     }
-    for (k = 0; k < 8; k++) {
-        int64_t xc, yc, w, gw;
-        fast_clip(c, (k & 1) ? hx : lx, (k & 2) ? hy : ly, (k & 4) ? hz : lz, &xc, &yc, &w);
-        if (w < r->cam.near_z || w > r->cam.far_z)
-            return 0;
-        gw = r->priv.guard * w - INSIDE_MARGIN;
-        if (xc < -gw || xc > gw || yc < -gw || yc > gw)
-            return 0;
-    }
-    return 1;
+    return corners_inside(c, lx, ly, lz, hx, hy, hz);
 }
 
 /* The clip rows of a fast draw for project_all, with the translations and
@@ -368,8 +375,8 @@ static ZS_INLINE_ALWAYS int32_t inside_row(const inside_rows *ir, int k, int32_t
  * box_inside tells from the bounding box, here from each vertex: the same
  * vertices are projected either way, and an inside draw's triangles go the
  * same way as the per-triangle loop's). */
-static ZS_NOINLINE int project_all(const draw_ctx *c, const inside_rows *ir, const zs_proj *p,
-                                   zs_vert *v, uint32_t n)
+static ZS_INLINE_ALWAYS int project_run(const draw_ctx *c, const inside_rows *ir,
+                                         const zs_proj *p, zs_vert *v, uint32_t n, int checked)
 {
     const zs_renderer *r = c->r;
     const int16_t *pos = c->mesh->positions, *end = pos + 3u * n;
@@ -396,19 +403,181 @@ static ZS_NOINLINE int project_all(const draw_ctx *c, const inside_rows *ir, con
         w = inside_row(ir, 2, px, py, pz);
 #endif
         /* near <= w <= far < 2^29, |xc|, |yc| <= guard * w < 2^31, by
-         * differences mod 2^32 */
-        if ((uint32_t)w - near_z > depth)
-            goto out;
-        gw = guard * (uint32_t)w;
-        if ((uint32_t)xc + gw > 2u * gw || (uint32_t)yc + gw > 2u * gw)
-            goto out;
-        ZS_PROJECT_FAST(p, xc, yc, w, v, 1);
+         * differences mod 2^32 (known for every int16 position where not
+         * checked) */
+        if (checked) {
+            if ((uint32_t)w - near_z > depth)
+                goto out;
+            gw = guard * (uint32_t)w;
+            if ((uint32_t)xc + gw > 2u * gw || (uint32_t)yc + gw > 2u * gw)
+                goto out;
+            ZS_PROJECT_FAST(p, xc, yc, w, v, 1);
+        } else {
+            ZS_PROJECT_NARROW(p, xc, yc, w, v);
+        }
         continue;
     out:
         v->z = ZS_VERT_UNPROJECTED;
         outside = 1;
     }
     return !outside;
+}
+
+/* project_run, without a test per vertex where the whole int16 cube of
+ * positions is inside near, far and the guard band (box_inside's test of
+ * its corners: a mesh small on the screen), depth_scale is below 2^32 (near
+ * below 3/4 of far) and near below 2^30 (zs_project_body's narrow case). */
+#if defined(__GNUC__) && defined(__thumb2__) && defined(__ARM_FEATURE_SIMD32) &&            \
+    defined(__ARM_FEATURE_IDIV) && !defined(ZS_SPLIT_MUL)
+#define PROJECT_ASM 1
+/* project_run's unchecked loop on Cortex-M4, the same arithmetic step for
+ * step (fast_clip's rows, zs_recip61_fast, zs_project_body's narrow case),
+ * with its constants in one block taken by load-multiples: the compiler's
+ * copy spills a dozen values a vertex. Order: each row's 64-bit constant
+ * and coefficients (w, xc, yc), near_z * 4, ds_lo, xk, hw, yk, nhh, end. */
+static void project_narrow_asm(const int32_t blk[24], const int16_t *pos, zs_vert *v)
+{
+    register const int32_t *r0 __asm__("r0") = blk;
+    register const int16_t *r1 __asm__("r1") = pos;
+    register zs_vert *r2 __asm__("r2") = v;
+    __asm__ volatile(
+        ".syntax unified\n"
+        "1:  ldrsh r4, [r1, #2]\n"
+        "    ldrsh r5, [r1, #4]\n"
+        "    ldrsh r3, [r1], #6\n"
+        /* w = (kw + m2 . p) >> 16, xc and yc likewise */
+        "    ldmia r0!, {r6, r8, r9, r10, r11}\n"
+        "    smlal r6, r8, r9, r3\n"
+        "    smlal r6, r8, r10, r4\n"
+        "    smlal r6, r8, r11, r5\n"
+        "    lsrs r6, r6, #16\n"
+        "    orr lr, r6, r8, lsl #16\n"
+        "    ldmia r0!, {r6, r8, r9, r10, r11}\n"
+        "    smlal r6, r8, r9, r3\n"
+        "    smlal r6, r8, r10, r4\n"
+        "    smlal r6, r8, r11, r5\n"
+        "    lsrs r6, r6, #16\n"
+        "    orr r12, r6, r8, lsl #16\n"
+        "    ldmia r0!, {r6, r8, r9, r10, r11}\n"
+        "    smlal r6, r8, r9, r3\n"
+        "    smlal r6, r8, r10, r4\n"
+        "    smlal r6, r8, r11, r5\n"
+        "    lsrs r6, r6, #16\n"
+        "    orr r3, r6, r8, lsl #16\n"
+        /* r4 = clz(w) = s + 1, d = w << s in r5, inv in r6 (zs_recip61_fast) */
+        "    clz r4, lr\n"
+        "    subs r5, r4, #1\n"
+        "    lsl r5, lr, r5\n"
+        "    add r6, r5, #0x4000\n"
+        "    lsrs r6, r6, #15\n"
+        "    mov r8, #-1\n"
+        "    udiv r6, r8, r6\n"
+        "    lsls r6, r6, #14\n"
+        "    umull r8, r9, r5, r6\n"
+        "    negs r8, r8\n"
+        "    mov r10, #0x20000000\n"
+        "    sbc r9, r10, r9\n"
+        "    lsrs r8, r8, #16\n"
+        "    orr r8, r8, r9, lsl #16\n"
+        "    smull r9, r10, r6, r8\n"
+        "    smull r9, r11, r10, r8\n"
+        "    asrs r10, r10, #5\n"
+        "    add r10, r10, r11, asr #18\n"
+        "    subs r10, r10, #1\n"
+        "    add r6, r6, r10, asr #8\n"
+        "    mul r8, r5, r6\n"
+        "    negs r8, r8\n"
+        "    cmp r8, r5\n"
+        "    it cs\n"
+        "    addcs r6, r6, #1\n"
+        /* shifts 33 - s (r5) and s - 1 (r4); nx in r12, ny in r3 */
+        "    rsb r5, r4, #34\n"
+        "    subs r4, r4, #2\n"
+        "    umull r8, r9, r12, r6\n"
+        "    asr r10, r12, #31\n"
+        "    mla r9, r10, r6, r9\n"
+        "    lsr r8, r8, r5\n"
+        "    lsl r9, r9, r4\n"
+        "    orr r12, r8, r9\n"
+        "    umull r8, r9, r3, r6\n"
+        "    asr r10, r3, #31\n"
+        "    mla r9, r10, r6, r9\n"
+        "    lsr r8, r8, r5\n"
+        "    lsl r9, r9, r4\n"
+        "    orr r3, r8, r9\n"
+        /* q = near / w (Q30), the depth in lr */
+        "    ldmia r0!, {r10, r11}\n"
+        "    umull r8, r9, r10, r6\n"
+        "    lsr r8, r8, r5\n"
+        "    lsl r9, r9, r4\n"
+        "    orr r8, r8, r9\n"
+        "    rsb r8, r8, #0x40000000\n"
+        "    umull r8, r9, r8, r11\n"
+        "    lsrs r8, r8, #30\n"
+        "    orr lr, r8, r9, lsl #2\n"
+        "    cmp lr, #0x40000000\n"
+        "    it hi\n"
+        "    movhi lr, #0x40000000\n"
+        /* x and y, the record */
+        "    ldmia r0!, {r8, r9, r10}\n"
+        "    smlal r8, r9, r12, r10\n"
+        "    lsrs r8, r8, #28\n"
+        "    orr r12, r8, r9, lsl #4\n"
+        "    ldmia r0!, {r8, r9, r10, r11}\n"
+        "    smlal r8, r9, r3, r10\n"
+        "    lsrs r8, r8, #28\n"
+        "    orr r3, r8, r9, lsl #4\n"
+        "    pkhbt r12, r12, r3, lsl #16\n"
+        "    strd r12, lr, [r2], #8\n"
+        "    subs r0, r0, #96\n"
+        "    cmp r1, r11\n"
+        "    bne 1b\n"
+        : "+r"(r0), "+r"(r1), "+r"(r2)
+        :
+        : "r3", "r4", "r5", "r6", "r8", "r9", "r10", "r11", "r12", "lr", "cc", "memory");
+}
+
+static void narrow_block(const draw_ctx *c, const inside_rows *ir, const zs_proj *p,
+                         const int16_t *end, int32_t blk[24])
+{
+    static const uint8_t row[3] = {2, 0, 1}; /* w, xc, yc */
+    int k, j;
+    for (k = 0; k < 3; k++) {
+        uint64_t kk = (uint64_t)ir->k[row[k]];
+        blk[5 * k] = zs_s32((uint32_t)(kk & 0xFFFFFFFFu));
+        blk[5 * k + 1] = zs_s32((uint32_t)(kk >> 32));
+        for (j = 0; j < 3; j++)
+            blk[5 * k + 2 + j] = c->clip[row[k]][j];
+    }
+    blk[15] = zs_s32(p->near_z << 2);
+    blk[16] = zs_s32(p->ds_lo);
+    blk[17] = zs_s32((uint32_t)((uint64_t)p->xk & 0xFFFFFFFFu));
+    blk[18] = zs_s32((uint32_t)((uint64_t)p->xk >> 32));
+    blk[19] = p->hw;
+    blk[20] = zs_s32((uint32_t)((uint64_t)p->yk & 0xFFFFFFFFu));
+    blk[21] = zs_s32((uint32_t)((uint64_t)p->yk >> 32));
+    blk[22] = p->nhh;
+    blk[23] = zs_s32((uint32_t)(uintptr_t)end);
+}
+#endif
+
+static ZS_NOINLINE int project_all(const draw_ctx *c, const inside_rows *ir, const zs_proj *p,
+                                   zs_vert *v, uint32_t n)
+{
+    if (p->ds_hi == 0 && p->near_z < ((uint32_t)1 << 30) &&
+        corners_inside(c, -32768, -32768, -32768, 32767, 32767, 32767)) {
+#ifdef PROJECT_ASM
+        int32_t blk[24];
+        if (n == 0)
+            return 1;
+        narrow_block(c, ir, p, c->mesh->positions + 3u * n, blk);
+        project_narrow_asm(blk, c->mesh->positions, v);
+        return 1;
+#else
+        return project_run(c, ir, p, v, n, 0);
+#endif
+    }
+    return project_run(c, ir, p, v, n, 1);
 }
 
 /* Vertices base .. base + n - 1 of the pool from the mesh's first n. Out of
@@ -667,14 +836,14 @@ static ZS_NOINLINE int indices_valid(const uint16_t *idx, uint32_t tris, uint32_
 #if defined(__ARM_FEATURE_SIMD32) && defined(ZS_WORD_STORES)
     /* Cortex-M4: two indices a word, both against last at once (usub16 sets
      * a lane's GE flag where index <= last, sel keeps bad's lane there and
-     * takes all ones elsewhere) */
+     * takes all ones elsewhere), four words a load-multiple */
     if (((uintptr_t)idx & 2u) && idx != end)
         bad |= last - *idx++; /* to a word boundary */
     if (end - idx >= 2) {
         const zs_word_alias *w = (const zs_word_alias *)(const void *)idx;
         const zs_word_alias *wend = w + (end - idx) / 2;
         const uint32_t lim = last * 0x10001u, ones = 0xFFFFFFFFu; /* last <= 65534 */
-        if ((wend - w) & 1) { /* then pairs of words */
+        while ((wend - w) & 3) { /* then blocks of four words */
             uint32_t t;
             __asm__(".syntax unified\n"
                     "    usub16 %1, %2, %3\n"
@@ -684,18 +853,22 @@ static ZS_NOINLINE int indices_valid(const uint16_t *idx, uint32_t tris, uint32_
                     : "cc");
         }
         if (w != wend) {
-            uint32_t t, a, b;
+            uint32_t t;
             __asm__(".syntax unified\n"
-                    "1:  ldrd %[a], %[b], [%[w]], #8\n"
-                    "    usub16 %[t], %[lim], %[a]\n"
+                    "1:  ldmia %[w]!, {r4, r5, r6, r8}\n"
+                    "    usub16 %[t], %[lim], r4\n"
                     "    sel %[acc], %[acc], %[ones]\n"
-                    "    usub16 %[t], %[lim], %[b]\n"
+                    "    usub16 %[t], %[lim], r5\n"
+                    "    sel %[acc], %[acc], %[ones]\n"
+                    "    usub16 %[t], %[lim], r6\n"
+                    "    sel %[acc], %[acc], %[ones]\n"
+                    "    usub16 %[t], %[lim], r8\n"
                     "    sel %[acc], %[acc], %[ones]\n"
                     "    cmp %[w], %[end]\n"
                     "    bne 1b\n"
-                    : [w] "+r"(w), [acc] "+r"(acc), [t] "=&r"(t), [a] "=&r"(a), [b] "=&r"(b)
+                    : [w] "+r"(w), [acc] "+r"(acc), [t] "=&r"(t)
                     : [end] "r"(wend), [lim] "r"(lim), [ones] "r"(ones)
-                    : "cc", "memory");
+                    : "r4", "r5", "r6", "r8", "cc", "memory");
         }
         idx = (const uint16_t *)(const void *)wend;
     }

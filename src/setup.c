@@ -349,37 +349,14 @@ typedef struct plain_run {
     int32_t width, height;
 } plain_run;
 
-/* Triangle t (indices idx[0..2]): the cull, then zs_setup_triangle's
- * decisions. simd (a constant where inlined): the Cortex-M4 words. */
-static ZS_INLINE_ALWAYS void plain_tri(plain_run *p, const uint16_t *idx, uint32_t t, int simd)
+/* Front face t (indices idx[0..2], vertices a, b, c) with its bounding box:
+ * zs_setup_triangle's decisions. */
+static ZS_INLINE_ALWAYS void plain_front(plain_run *p, const uint16_t *idx, uint32_t t,
+                                         const zs_vert *a, const zs_vert *b, const zs_vert *c,
+                                         int32_t xmin, int32_t xmax, int32_t ymin, int32_t ymax)
 {
-    const zs_vert *a = &p->pool[idx[0]], *b = &p->pool[idx[1]], *c = &p->pool[idx[2]];
-    int32_t xmin, xmax, ymin, ymax, row0, row1, col0, col1;
+    int32_t row0, row1, col0, col1;
     zs_tri *rec;
-    (void)simd;
-#ifdef SIMD_AREA
-    if (simd) {
-        uint32_t pa = vert_word(a), pb = vert_word(b), pc = vert_word(c), lo, hi;
-        if (area2_simd(pa, pb, pc) >= 0)
-            return; /* culled: counted at the end */
-        box_simd(pa, pb, pc, &lo, &hi);
-        xmin = zs_asr32(zs_s32(lo << 16), 16);
-        ymin = zs_asr32(zs_s32(lo), 16);
-        xmax = zs_asr32(zs_s32(hi << 16), 16);
-        ymax = zs_asr32(zs_s32(hi), 16);
-    } else
-#endif
-    {
-#ifdef ZS_SPLIT_MUL
-        /* simd here: differences below 2^14, the products in 32 bits */
-        if (simd ? (b->x - a->x) * (c->y - a->y) - (c->x - a->x) * (b->y - a->y) >= 0
-                 : back_face(a, b, c))
-#else
-        if (back_face(a, b, c))
-#endif
-            return; /* culled: counted at the end */
-        box3(a, b, c, &xmin, &xmax, &ymin, &ymax);
-    }
     if (xmax <= 0 || ymax <= 0 || xmin >= 16 * p->width || ymin >= 16 * p->height) {
         p->rejected++;
         return;
@@ -412,6 +389,68 @@ static ZS_INLINE_ALWAYS void plain_tri(plain_run *p, const uint16_t *idx, uint32
     p->nt++;
 }
 
+/* Triangle t (indices idx[0..2]): the cull, then plain_front. simd (a
+ * constant where inlined): differences below 2^14 (Cortex-M0's 32-bit
+ * products). */
+static ZS_INLINE_ALWAYS void plain_tri(plain_run *p, const uint16_t *idx, uint32_t t, int simd)
+{
+    const zs_vert *a = &p->pool[idx[0]], *b = &p->pool[idx[1]], *c = &p->pool[idx[2]];
+    int32_t xmin, xmax, ymin, ymax;
+    (void)simd;
+#ifdef ZS_SPLIT_MUL
+    if (simd ? (b->x - a->x) * (c->y - a->y) - (c->x - a->x) * (b->y - a->y) >= 0
+             : back_face(a, b, c))
+#else
+    if (back_face(a, b, c))
+#endif
+        return; /* culled: counted at the end */
+    box3(a, b, c, &xmin, &xmax, &ymin, &ymax);
+    plain_front(p, idx, t, a, b, c, xmin, xmax, ymin, ymax);
+}
+
+#ifdef SIMD_AREA
+/* The Cortex-M4 words' loop: the back faces (most of a closed mesh's
+ * culled triangles) skipped in an assembly loop of 14 instructions each
+ * (area2_simd's cull), which stops at a front face with its words. */
+static ZS_INLINE_ALWAYS void plain_simd(plain_run *p, const uint16_t *idx, uint32_t n)
+{
+    const zs_vert *const pool = p->pool;
+    const uint16_t *const end = idx + 3u * n;
+    uint32_t t = 0;
+    while (idx != end) {
+        uint32_t pa, pb, pc, v, lo, hi;
+        int32_t area;
+        __asm__(".syntax unified\n"
+                "1:  ldrh %[b], [%[idx], #2]\n"
+                "    ldrh %[c], [%[idx], #4]\n"
+                "    ldrh %[a], [%[idx]], #6\n"
+                "    ldr %[a], [%[pool], %[a], lsl #3]\n"
+                "    ldr %[b], [%[pool], %[b], lsl #3]\n"
+                "    ldr %[c], [%[pool], %[c], lsl #3]\n"
+                "    ssub16 %[s], %[b], %[a]\n"
+                "    ssub16 %[v], %[c], %[a]\n"
+                "    smusdx %[s], %[s], %[v]\n"
+                "    cmp %[s], #0\n"
+                "    blt 2f\n"
+                "    adds %[t], %[t], #1\n"
+                "    cmp %[idx], %[end]\n"
+                "    bne 1b\n"
+                "2:\n"
+                : [idx] "+r"(idx), [t] "+r"(t), [a] "=&r"(pa), [b] "=&r"(pb), [c] "=&r"(pc),
+                  [s] "=&r"(area), [v] "=&r"(v)
+                : [pool] "r"(pool), [end] "r"(end)
+                : "cc", "memory");
+        if (area >= 0)
+            break; /* the rest were back faces: counted at the end */
+        box_simd(pa, pb, pc, &lo, &hi);
+        plain_front(p, idx - 3, t, &pool[idx[-3]], &pool[idx[-2]], &pool[idx[-1]],
+                    zs_asr32(zs_s32(lo << 16), 16), zs_asr32(zs_s32(hi << 16), 16),
+                    zs_asr32(zs_s32(lo), 16), zs_asr32(zs_s32(hi), 16));
+        t++;
+    }
+}
+#endif
+
 /* zs_setup_run's loop for the plain frame, one copy for each kind of cull. */
 static ZS_NOINLINE void setup_run_plain(zs_renderer *r, const uint16_t *idx, uint32_t n,
                                         uint16_t base, const zs_color *colors, uint32_t color)
@@ -440,7 +479,13 @@ static ZS_NOINLINE void setup_run_plain(zs_renderer *r, const uint16_t *idx, uin
      * 32-bit products) */
 #ifdef SIMD_AREA
     if (r->priv.guard * dim < 2048) {
-#elif defined(ZS_SPLIT_MUL)
+        plain_simd(&p, idx, n);
+    } else {
+        for (t = 0; t < n; t++, idx += 3)
+            plain_tri(&p, idx, t, 0);
+    }
+#else
+#if defined(ZS_SPLIT_MUL)
     if (r->priv.guard * dim < 1024) {
 #else
     if (dim < 0) { /* no such path here */
@@ -451,6 +496,7 @@ static ZS_NOINLINE void setup_run_plain(zs_renderer *r, const uint16_t *idx, uin
         for (t = 0; t < n; t++, idx += 3)
             plain_tri(&p, idx, t, 0);
     }
+#endif
     r->priv.n_tris = (uint16_t)p.nt;
     r->stats.records += p.nt - first;
     r->stats.tris_stored += p.nt - first;

@@ -503,7 +503,7 @@ static inline unsigned zs_norm_shift(uint32_t v, uint32_t *norm)
     unsigned s = (unsigned)__builtin_clz(v) - 1u;
     *norm = v << s;
     return s;
-#else
+#elif ZS_SMALL_
     unsigned s = 0, k;
     for (k = 16; k > 0; k >>= 1)
         if (v < ((uint32_t)1 << (31u - k))) {
@@ -512,6 +512,37 @@ static inline unsigned zs_norm_shift(uint32_t v, uint32_t *norm)
         }
     *norm = v;
     return s;
+#else
+    /* unrolled, each step's test by a shift (no constant to load) */
+    unsigned s = 0;
+#define ZS_NORM_STEP(k)                                                                   \
+    if ((v >> (31u - (k))) == 0) {                                                        \
+        v <<= (k);                                                                        \
+        s += (k);                                                                         \
+    }
+    ZS_NORM_STEP(16u)
+    ZS_NORM_STEP(8u)
+    ZS_NORM_STEP(4u)
+    ZS_NORM_STEP(2u)
+    ZS_NORM_STEP(1u)
+#undef ZS_NORM_STEP
+    *norm = v;
+    return s;
+#endif
+}
+
+/* a * b for a, b <= 2^31: on Cortex-M0 the two middle products' sum then
+ * fits 32 bits (no carry out of it); inline where called. */
+static ZS_INLINE_ALWAYS uint64_t zs_umul31(uint32_t a, uint32_t b)
+{
+#ifdef ZS_SPLIT_MUL
+    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t ll = al * bl, mid = al * bh + ah * bl, hh = ah * bh;
+    uint32_t lo = ll + (mid << 16);
+    hh += (mid >> 16) + (lo < ll ? 1u : 0u);
+    return ((uint64_t)hh << 32) | lo;
+#else
+    return (uint64_t)a * b;
 #endif
 }
 
@@ -560,8 +591,8 @@ static inline int32_t zs_s32(uint32_t u)
  * need no clamp, as |xc| * inv / 2^(33 - s) <= guard * 2^28 (inv <= 2^61 /
  * (w 2^s)) puts x within hw +- guard * hw, inside +-(guard + 1) 8 width <=
  * 32767 (the guard's definition, renderer.c), and y likewise. */
-static inline void zs_project_fast(const zs_proj *p, int32_t xc, int32_t yc, int32_t w,
-                                   zs_vert *v, int inside)
+static ZS_INLINE_ALWAYS void zs_project_body(const zs_proj *p, int32_t xc, int32_t yc,
+                                              int32_t w, zs_vert *v, int inside, int narrow)
 {
     uint32_t d, inv, q, m, zz;
     unsigned s = zs_norm_shift((uint32_t)w, &d); /* 2..30 */
@@ -573,11 +604,24 @@ static inline void zs_project_fast(const zs_proj *p, int32_t xc, int32_t yc, int
     inv = zs_recip61_fast(d);
 #endif
     /* floor(xc * inv / 2^(33 - s)): xc / w in Q28 */
+#ifdef ZS_SPLIT_MUL
+    /* (the products inline: |xc|, |yc| < 2^31) */
+    nx = zs_s32(zs_shr64_lo(xc < 0 ? 0u - zs_umul31(0u - (uint32_t)xc, inv)
+                                   : zs_umul31((uint32_t)xc, inv), 33u - s));
+    ny = zs_s32(zs_shr64_lo(yc < 0 ? 0u - zs_umul31(0u - (uint32_t)yc, inv)
+                                   : zs_umul31((uint32_t)yc, inv), 33u - s));
+#else
     nx = zs_s32(zs_shr64_lo((uint64_t)zs_mul_su32(xc, inv), 33u - s));
     ny = zs_s32(zs_shr64_lo((uint64_t)zs_mul_su32(yc, inv), 33u - s));
-    q = zs_shr64_lo(zs_umul32(p->near_z, inv), 31u - s); /* near / w, Q30, <= 2^30 */
-    m = 0x40000000u - q;
-    dz = zs_umul32(m, p->ds_lo) + ((uint64_t)(m * p->ds_hi) << 32);
+#endif
+    if (narrow) { /* ds_hi is 0 and near below 2^30: q by the same shift as nx */
+        q = zs_shr64_lo(zs_umul32(p->near_z << 2, inv), 33u - s);
+        dz = zs_umul32(0x40000000u - q, p->ds_lo);
+    } else {
+        q = zs_shr64_lo(zs_umul31(p->near_z, inv), 31u - s); /* near / w, Q30, <= 2^30 */
+        m = 0x40000000u - q;
+        dz = zs_umul32(m, p->ds_lo) + ((uint64_t)(m * p->ds_hi) << 32);
+    }
     zz = zs_shr64_lo(dz, 30); /* under 2^30 + 16 for w <= far */
     x = (int32_t)zs_asr64(p->xk + zs_mul_32x16(nx, p->hw), 28);
     y = (int32_t)zs_asr64(p->yk + zs_mul_32x16(ny, p->nhh), 28);
@@ -590,14 +634,23 @@ static inline void zs_project_fast(const zs_proj *p, int32_t xc, int32_t yc, int
     v->z = zz > 0x40000000u ? 0x40000000u : zz;
 }
 
+static inline void zs_project_fast(const zs_proj *p, int32_t xc, int32_t yc, int32_t w,
+                                   zs_vert *v, int inside)
+{
+    zs_project_body(p, xc, yc, w, v, inside, 0);
+}
+
 /* Built for size, one copy out of line (setup.c) serves zs_project and the
- * draw loop; else inline in each. */
+ * draw loop; else inline in each. ZS_PROJECT_NARROW: a vertex inside the
+ * guard band where ds_hi is 0 and near_z below 2^30. */
 #if defined(__OPTIMIZE_SIZE__)
 void zs_project_fast_out(const zs_proj *p, int32_t xc, int32_t yc, int32_t w, zs_vert *v,
                          int inside);
 #define ZS_PROJECT_FAST zs_project_fast_out
+#define ZS_PROJECT_NARROW(p, xc, yc, w, v) zs_project_fast_out(p, xc, yc, w, v, 1)
 #else
 #define ZS_PROJECT_FAST zs_project_fast
+#define ZS_PROJECT_NARROW(p, xc, yc, w, v) zs_project_body(p, xc, yc, w, v, 1, 1)
 #endif
 
 /* ---- span fills (inline: they run once per span) ---- */

@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* The products Cortex-M0 builds form from 32-bit halves (zs_mul64_small,
- * zs_umul32, zs_smul32 with ZS_SPLIT_PRODUCTS) must equal plain 64-bit
- * products, zs_udiv64_32 (by a reciprocal there) the 64-bit quotient, and a
- * core built with them must render what the plain core does.
+ * zs_umul32, zs_umul31, zs_smul32 with ZS_SPLIT_PRODUCTS) must equal plain 64-bit
+ * products, zs_udiv64_32 and zs_recip61 (by reciprocals there) the 64-bit
+ * quotients, and a core built with them must render what the plain core does.
  *
  * Built twice (mk/variants.mk): against the core compiled as usual and
  * compiled with -DZS_SPLIT_PRODUCTS (this file too). Each build
@@ -69,7 +69,17 @@ static void check_helpers(void)
         check(zs_umul32(u, v) == (uint64_t)u * v, "zs_umul32", (long long)u, (long long)v);
         check(zs_umul32(0xFFFFFFFFu, v) == 0xFFFFFFFFull * v, "zs_umul32", -1, (long long)v);
         check(zs_smul32(s, t) == (int64_t)s * t, "zs_smul32", s, t);
+        /* zs_umul31: both operands at most 2^31 */
+        u = (uint32_t)rnd() % 0x80000001u;
+        v = (k & 1) ? 0x80000000u - (uint32_t)(rnd() & 0xFFFFu) : (uint32_t)rnd() % 0x80000001u;
+        check(zs_umul31(u, v) == (uint64_t)u * v, "zs_umul31", (long long)u, (long long)v);
     }
+    check(zs_umul31(0x80000000u, 0x80000000u) == 0x4000000000000000ull, "zs_umul31", 1, 1);
+    check(zs_umul31(0x7FFFFFFFu, 0x80000000u) == 0x7FFFFFFFull << 31, "zs_umul31", 2, 2);
+    check(zs_umul31(0x7FFFFFFFu, 0x7FFFFFFFu) == 0x7FFFFFFFull * 0x7FFFFFFFull, "zs_umul31", 3, 3);
+    check(zs_umul31(0x8000FFFFu & 0x7FFFFFFFu, 0x7FFFFFFFu) ==
+              (uint64_t)(0x8000FFFFu & 0x7FFFFFFFu) * 0x7FFFFFFFu,
+          "zs_umul31", 4, 4);
     /* zs_udiv64_32 (on Cortex-M0 by a reciprocal of v's high half): every
      * high half of the divisor, then random dividends and divisors */
     for (k = 0; k < (1 << 15); k++) {
@@ -82,6 +92,29 @@ static void check_helpers(void)
                                                                  0xFFFFFFFFu) / v),
               "zs_udiv64_32 (largest dividend)", (long long)v, 0);
         check(zs_udiv64_32(0, nl, v) == nl / v, "zs_udiv64_32 (nh 0)", (long long)nl, (long long)v);
+    }
+    /* zs_recip61 (on Cortex-M0 from recip15 and one Newton step): floor(2^61
+     * / d) for both ends of [2^30, 2^31), around every multiple of 2^15 (the
+     * divisor's split, where its estimate is farthest off) and at random */
+    for (k = 0; k < 70000; k++) {
+        uint32_t lo = 0x40000000u + (uint32_t)k, hi = 0x7FFFFFFFu - (uint32_t)k;
+        check(zs_recip61(lo) == (uint32_t)(((uint64_t)1 << 61) / lo), "zs_recip61",
+              (long long)lo, 0);
+        check(zs_recip61(hi) == (uint32_t)(((uint64_t)1 << 61) / hi), "zs_recip61",
+              (long long)hi, 0);
+    }
+    for (k = 0x8000; k < 0x10000; k++) {
+        int j;
+        for (j = -2; j <= 2; j++) {
+            uint32_t d = (uint32_t)(k * 0x8000 + j);
+            if (d >= 0x40000000u && d < 0x80000000u)
+                check(zs_recip61(d) == (uint32_t)(((uint64_t)1 << 61) / d), "zs_recip61",
+                      (long long)d, 0);
+        }
+    }
+    for (k = 0; k < 2000000; k++) {
+        uint32_t d = 0x40000000u | ((uint32_t)rnd() & 0x3FFFFFFFu);
+        check(zs_recip61(d) == (uint32_t)(((uint64_t)1 << 61) / d), "zs_recip61", (long long)d, 0);
     }
     for (k = 0; k < 2000000; k++) {
         uint32_t v = (uint32_t)rnd() | 0x80000000u;

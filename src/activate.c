@@ -26,13 +26,13 @@ static void edge_init(zs_edge *e, const zs_vert *a, const zs_vert *b, int32_t y)
     int32_t q0 = zs_asr32(a->x - 8, 4), r0 = a->x - 8 - 16 * q0;
     int32_t t = 16 * y + 8 - a->y; /* in [0, 16) on the edge's first row */
     int32_t x, err, step;
+    const int32_t y_end = zs_first_row(b->y);
     e->den = den;
-    e->y_end = (int16_t)zs_first_row(b->y);
-    if (e->y_end > y + 1) {
+    if (y_end > y + 1) {
         step = (16 * dx) / den;
         if (step * den > 16 * dx)
             step--; /* floor */
-        e->step = step;
+        e->run = zs_edge_run(y_end, step);
         e->rstep = 16 * dx - step * den;
         if (t < 16) {
             /* the first column from the step, without a second division:
@@ -45,8 +45,9 @@ static void edge_init(zs_edge *e, const zs_vert *a, const zs_vert *b, int32_t y)
             e->err = c * den - n;
             return;
         }
-    } else { /* covers one row: never stepped (a division saved, a helper call on M0) */
-        e->step = 0;
+    } else { /* covers one row: never stepped (a division saved, a helper call on M0);
+              * it ends after row y (its end row as y + 1: 0 < y_end) */
+        e->run = zs_edge_run(y + 1, 0);
         e->rstep = 0;
     }
     if (t < 16) {

@@ -84,8 +84,8 @@ void zs_raster_begin(zs_renderer *r)
 static ZS_INLINE_ALWAYS int fold_edge(zs_renderer *r, zs_edge *keep, uint16_t keep_i, zs_edge *dup)
 {
     zs_active *act = r->priv.active;
-    if (keep->err != dup->err || keep->step != dup->step || keep->rstep != dup->rstep ||
-        keep->den != dup->den || keep->y_end != dup->y_end)
+    if (keep->err != dup->err || keep->run != dup->run || keep->rstep != dup->rstep ||
+        keep->den != dup->den)
         return 0;
     if ((keep->lead != ZS_NONE && dup->lead != ZS_NONE) ||
         (keep->trail != ZS_NONE && dup->trail != ZS_NONE))
@@ -295,6 +295,23 @@ static inline int retire_edge(zs_active *act, const zs_edge *e, int32_t next, ui
     return n_cont;
 }
 
+/* Reads e's run and rstep, x and err (neighbours: on Thumb-2 one paired
+ * load each, which compilers do not form here by themselves) and writes x
+ * and err back. */
+#if defined(__GNUC__) && defined(__thumb2__)
+#define ZS_LOAD_RUN(e, run, rstep)                                                       \
+    __asm__("ldrd %0, %1, [%2, #8]" : "=r"(run), "=r"(rstep) : "r"(e), "m"((e)->run),     \
+            "m"((e)->rstep))
+#define ZS_LOAD_X(e, x, err)                                                             \
+    __asm__("ldrd %0, %1, [%2]" : "=r"(x), "=r"(err) : "r"(e), "m"((e)->x), "m"((e)->err))
+#define ZS_STORE_X(e, x, err)                                                            \
+    __asm__("strd %2, %3, [%4]" : "=m"((e)->x), "=m"((e)->err) : "r"(x), "r"(err), "r"(e))
+#else
+#define ZS_LOAD_RUN(e, run, rstep) ((run) = (e)->run, (rstep) = (e)->rstep)
+#define ZS_LOAD_X(e, x, err) ((x) = (e)->x, (err) = (e)->err)
+#define ZS_STORE_X(e, x, err) ((e)->x = (x), (e)->err = (err))
+#endif
+
 /* Steps every edge to row y + 1, retires finished ones and keeps the list
  * sorted (an edge that passed its left neighbour is moved back: rare).
  * Planes are not stepped: each is evaluated for the row it is needed on. */
@@ -307,69 +324,78 @@ static void step_edges(zs_renderer *r, int32_t y)
     uint16_t *const cont = r->priv.in_set;
     const int n = r->priv.n_ael;
     const int32_t next = y + 1;
+    const uint32_t next_hi = (uint32_t)next << 16;
+    uint16_t *p = ael, *const end = ael + n;
     int i, kept = 0, n_cont = 0;
     int32_t prev_x = INT32_MIN;
     /* up to the first edge that retires, every edge keeps its place or moves
-     * back among those before it: the list is rewritten only there */
-    for (i = 0; i < n; i++) {
-        zs_edge *const e = &edges[ael[i]];
-        int32_t x, err;
-        if (next >= e->y_end)
+     * back among those before it: the list is rewritten only there. One
+     * word holds the end row and the step; x and err, step and rstep are
+     * neighbours (paired loads and stores where the core has them). */
+    for (; p != end; p++) {
+        zs_edge *const e = &edges[*p];
+        uint32_t run;
+        int32_t x, err, rstep;
+        ZS_LOAD_RUN(e, run, rstep);
+        if (zs_run_ends(run, next_hi))
             break;
-        x = e->x + e->step;
-        err = e->err - e->rstep;
+        ZS_LOAD_X(e, x, err);
+        x += zs_run_step(run);
+        err -= rstep;
         if (err < 0) {
             err += e->den;
             x++;
         }
-        e->x = x;
-        e->err = err;
+        ZS_STORE_X(e, x, err);
         if (x >= prev_x) {
             prev_x = x;
         } else {
-            const uint16_t ei = ael[i];
-            int j = i;
-            for (; j > 0 && edges[ael[j - 1]].x > x; j--)
-                ael[j] = ael[j - 1];
-            ael[j] = ei;
+            uint16_t *q = p;
+            const uint16_t ei = *q;
+            for (; q > ael && edges[q[-1]].x > x; q--)
+                q[0] = q[-1];
+            *q = ei;
         }
     }
-    kept = i;
-    if (i < n) {
+    kept = (int)(p - ael);
+    if (p != end) {
         /* the free stacks' tops in locals (on M0 each priv field costs a
          * literal load), written back before anything else takes from them */
         zs_active *const act = r->priv.active;
         uint16_t *const efree = r->priv.edge_free, *const afree = r->priv.active_free;
         unsigned n_efree = r->priv.n_edge_free, n_afree = r->priv.n_active_free;
-        for (; i < n; i++) {
-            const uint16_t ei = ael[i];
+        uint16_t *out = ael + kept;
+        for (; p != end; p++) {
+            const uint16_t ei = *p;
             zs_edge *const e = &edges[ei];
-            int32_t x, err;
-            if (next >= e->y_end) {
+            uint32_t run;
+            int32_t x, err, rstep;
+            ZS_LOAD_RUN(e, run, rstep);
+            if (zs_run_ends(run, next_hi)) {
                 n_cont = retire_edge(act, e, next, cont, n_cont, afree, &n_afree);
                 efree[n_efree++] = ei;
                 continue;
             }
             /* locals: a store through e could otherwise force reloads */
-            x = e->x + e->step;
-            err = e->err - e->rstep;
+            ZS_LOAD_X(e, x, err);
+            x += zs_run_step(run);
+            err -= rstep;
             if (err < 0) {
                 err += e->den;
                 x++;
             }
-            e->x = x;
-            e->err = err;
+            ZS_STORE_X(e, x, err);
             if (x >= prev_x) {
                 prev_x = x;
-                ael[kept++] = ei;
+                *out++ = ei;
             } else {
-                int j = kept;
-                for (; j > 0 && edges[ael[j - 1]].x > x; j--)
-                    ael[j] = ael[j - 1];
-                ael[j] = ei;
-                kept++;
+                uint16_t *q = out++;
+                for (; q > ael && edges[q[-1]].x > x; q--)
+                    q[0] = q[-1];
+                *q = ei;
             }
         }
+        kept = (int)(out - ael);
         r->priv.n_edge_free = (uint16_t)n_efree;
         r->priv.n_active_free = (uint16_t)n_afree;
     }

@@ -373,9 +373,42 @@ static inline int retire_edge(zs_active *act, const zs_edge *e, int32_t next, ui
 #define ZS_STORE_X(e, x, err) ((e)->x = (x), (e)->err = (err))
 #endif
 
+/* e one row down (its run and rstep loaded); returns its new x. */
+static ZS_INLINE_ALWAYS int32_t step_one(zs_edge *e, uint32_t run, int32_t rstep)
+{
+    int32_t x, err;
+    ZS_LOAD_X(e, x, err);
+    x += zs_run_step(run);
+    err -= rstep;
+    if (err < 0) {
+        err += e->den;
+        x++;
+    }
+    ZS_STORE_X(e, x, err);
+    return x;
+}
+
+/* Puts edge ei, now at x, at *at or, where it passed edges before it (rare),
+ * back among them: ael[0, at - ael) is sorted. */
+#if defined(__OPTIMIZE_SIZE__)
+#define ZS_PLACE_INLINE ZS_NOINLINE /* one copy, off the loops' registers */
+#else
+#define ZS_PLACE_INLINE ZS_INLINE_ALWAYS
+#endif
+static ZS_PLACE_INLINE void place(uint16_t *const ael, const zs_edge *edges, uint16_t *at,
+                                  uint16_t ei, int32_t x)
+{
+    for (; at > ael && edges[at[-1]].x > x; at--)
+        at[0] = at[-1];
+    *at = ei;
+}
+
 /* Steps every edge to row y + 1, retires finished ones and keeps the list
  * sorted (an edge that passed its left neighbour is moved back: rare).
- * Planes are not stepped: each is evaluated for the row it is needed on. */
+ * Planes are not stepped: each is evaluated for the row it is needed on.
+ * The last edge's run reads "ends" while the loops run, so they stop there
+ * with no test for the list's end; it is put back and the last edge done
+ * after them. */
 static void step_edges(zs_renderer *r, int32_t y)
 {
     uint16_t *const ael = r->priv.ael;
@@ -386,79 +419,85 @@ static void step_edges(zs_renderer *r, int32_t y)
     const int n = r->priv.n_ael;
     const int32_t next = y + 1;
     const uint32_t next_hi = (uint32_t)next << 16;
-    uint16_t *p = ael, *const end = ael + n;
     int i, kept = 0, n_cont = 0;
-    int32_t prev_x = INT32_MIN;
-    /* up to the first edge that retires, every edge keeps its place or moves
-     * back among those before it: the list is rewritten only there. One
-     * word holds the end row and the step; x and err, step and rstep are
-     * neighbours (paired loads and stores where the core has them). */
-    for (; p != end; p++) {
-        zs_edge *const e = &edges[*p];
-        uint32_t run;
-        int32_t x, err, rstep;
-        ZS_LOAD_RUN(e, run, rstep);
-        if (zs_run_ends(run, next_hi))
-            break;
-        ZS_LOAD_X(e, x, err);
-        x += zs_run_step(run);
-        err -= rstep;
-        if (err < 0) {
-            err += e->den;
-            x++;
-        }
-        ZS_STORE_X(e, x, err);
-        if (x >= prev_x) {
-            prev_x = x;
-        } else {
-            uint16_t *q = p;
-            const uint16_t ei = *q;
-            for (; q > ael && edges[q[-1]].x > x; q--)
-                q[0] = q[-1];
-            *q = ei;
-        }
-    }
-    kept = (int)(p - ael);
-    if (p != end) {
-        /* the free stacks' tops in locals (on M0 each priv field costs a
-         * literal load), written back before anything else takes from them */
-        zs_active *const act = r->priv.active;
-        uint16_t *const efree = r->priv.edge_free, *const afree = r->priv.active_free;
-        unsigned n_efree = r->priv.n_edge_free, n_afree = r->priv.n_active_free;
-        uint16_t *out = ael + kept;
-        for (; p != end; p++) {
-            const uint16_t ei = *p;
-            zs_edge *const e = &edges[ei];
+    if (n > 0) {
+        uint16_t *p = ael, *const last = ael + n - 1;
+        zs_edge *const le = &edges[*last];
+        const uint32_t last_run = le->run;
+        int32_t prev_x = INT32_MIN;
+        le->run = 0; /* ends by any row */
+        /* up to the first edge that retires, every edge keeps its place or
+         * moves back among those before it: the list is rewritten only
+         * there. One word holds the end row and the step; x and err, step
+         * and rstep are neighbours (paired loads and stores where the core
+         * has them). */
+        for (;; p++) {
+            zs_edge *const e = &edges[*p];
             uint32_t run;
-            int32_t x, err, rstep;
+            int32_t x, rstep;
             ZS_LOAD_RUN(e, run, rstep);
-            if (zs_run_ends(run, next_hi)) {
-                n_cont = retire_edge(act, e, next, cont, n_cont, afree, &n_afree);
-                efree[n_efree++] = ei;
-                continue;
-            }
-            /* locals: a store through e could otherwise force reloads */
-            ZS_LOAD_X(e, x, err);
-            x += zs_run_step(run);
-            err -= rstep;
-            if (err < 0) {
-                err += e->den;
-                x++;
-            }
-            ZS_STORE_X(e, x, err);
-            if (x >= prev_x) {
+            if (zs_run_ends(run, next_hi))
+                break;
+            x = step_one(e, run, rstep);
+            if (x >= prev_x)
                 prev_x = x;
-                *out++ = ei;
-            } else {
-                uint16_t *q = out++;
-                for (; q > ael && edges[q[-1]].x > x; q--)
-                    q[0] = q[-1];
-                *q = ei;
-            }
+            else
+                place(ael, edges, p, *p, x);
         }
-        kept = (int)(out - ael);
-        r->priv.n_edge_free = (uint16_t)n_efree;
-        r->priv.n_active_free = (uint16_t)n_afree;
+        le->run = last_run;
+        if (p == last && !zs_run_ends(last_run, next_hi)) {
+            const int32_t x = step_one(le, last_run, le->rstep);
+            if (x < prev_x)
+                place(ael, edges, p, *p, x);
+            kept = n;
+        } else {
+            /* the free stacks' tops in locals (on M0 each priv field costs
+             * a literal load), written back before anything else takes
+             * from them */
+            zs_active *const act = r->priv.active;
+            uint16_t *const efree = r->priv.edge_free, *const afree = r->priv.active_free;
+            unsigned n_efree = r->priv.n_edge_free, n_afree = r->priv.n_active_free;
+            uint16_t *out = p;
+            int32_t x;
+            le->run = 0;
+            for (;; p++) {
+                const uint16_t ei = *p;
+                zs_edge *const e = &edges[ei];
+                uint32_t run;
+                int32_t rstep;
+                ZS_LOAD_RUN(e, run, rstep);
+                if (zs_run_ends(run, next_hi)) {
+                    if (p == last) {
+                        le->run = last_run;
+                        if (!zs_run_ends(last_run, next_hi))
+                            break; /* stepped below */
+                    }
+                    /* the one place that retires (a single copy at -Os) */
+                    n_cont = retire_edge(act, e, next, cont, n_cont, afree, &n_afree);
+                    efree[n_efree++] = ei;
+                    if (p == last)
+                        goto retired;
+                    continue;
+                }
+                /* locals: a store through e could otherwise force reloads */
+                x = step_one(e, run, rstep);
+                if (x >= prev_x) {
+                    prev_x = x;
+                    *out++ = ei;
+                } else {
+                    place(ael, edges, out++, ei, x);
+                }
+            }
+            x = step_one(le, last_run, le->rstep);
+            if (x >= prev_x)
+                *out++ = *last;
+            else
+                place(ael, edges, out++, *last, x);
+        retired:
+            kept = (int)(out - ael);
+            r->priv.n_edge_free = (uint16_t)n_efree;
+            r->priv.n_active_free = (uint16_t)n_afree;
+        }
     }
     r->priv.n_ael = (uint16_t)kept;
     r->priv.n_sorted = (uint16_t)kept;

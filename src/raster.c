@@ -203,63 +203,6 @@ static int merge_columns(zs_renderer *r, int sorted, int n)
     return sorted + nb;
 }
 
-/* A tail of at most ZS_SMALL_BATCH edges (most rows'): merged as
- * merge_columns would merge it, without the lists. The same order (by column
- * clamped to the screen, ties in arrival order) and the same folds (a twin
- * met among the tail's edges at its own column, the latest first), by
- * insertion into a local copy, then the same merge from the back. */
-#define ZS_SMALL_BATCH 6
-static int merge_small(zs_renderer *r, int sorted, int n)
-{
-    uint16_t *const ael = r->priv.ael;
-    zs_edge *const edges = r->priv.edges;
-    const int32_t w = (int32_t)r->cfg.width;
-    uint16_t bl[ZS_SMALL_BATCH];
-    int32_t col[ZS_SMALL_BATCH];
-    int i, j, k, nb = 0;
-    for (i = sorted; i < n; i++) {
-        const uint16_t ei = ael[i];
-        zs_edge *const e = &edges[ei];
-        const int32_t x = e->x;
-        const int32_t c = zs_clampi(x, 0, w);
-        for (j = nb; j > 0 && col[j - 1] > c; j--)
-            ;
-        if (c == x) { /* twins start at the same column (see merge_columns) */
-            for (k = j - 1; k >= 0 && col[k] == c; k--)
-                if (edges[bl[k]].x == x && fold_edge(r, &edges[bl[k]], bl[k], e)) {
-                    r->priv.edge_free[r->priv.n_edge_free++] = ei;
-                    goto folded;
-                }
-        }
-        for (k = nb; k > j; k--) {
-            bl[k] = bl[k - 1];
-            col[k] = col[k - 1];
-        }
-        bl[j] = ei;
-        col[j] = c;
-        nb++;
-    folded:;
-    }
-    i = sorted - 1;
-    k = sorted + nb - 1;
-    {
-        const int32_t x0 = sorted > 0 ? edges[ael[0]].x : INT32_MAX;
-        for (j = nb - 1; j >= 0; j--) {
-            const uint16_t b = bl[j];
-            const int32_t bx = edges[b].x;
-            if (bx >= x0 && i >= 0) {
-                while (edges[ael[i]].x > bx)
-                    ael[k--] = ael[i--];
-            } else {
-                for (; i >= 0; i--)
-                    ael[k--] = ael[i];
-            }
-            ael[k--] = b;
-        }
-    }
-    return sorted + nb;
-}
-
 /* Activates the triangles first met on row y; sorts, folds and merges the
  * unsorted tail (those edges plus continuations made by the last step). */
 static void add_new_edges(zs_renderer *r, int32_t y)
@@ -278,7 +221,7 @@ static void add_new_edges(zs_renderer *r, int32_t y)
         return;
     if (r->priv.sort_keys) {
         clear_twins(r);
-        n = n - sorted <= ZS_SMALL_BATCH ? merge_small(r, sorted, n) : merge_columns(r, sorted, n);
+        n = merge_columns(r, sorted, n);
         r->priv.n_ael = (uint16_t)n;
         r->priv.n_sorted = (uint16_t)n;
         return;

@@ -16,8 +16,9 @@
  *    edges reaching far off either side, clipped at the guard band: the step
  *    packed with the end row in one word, src/zs_internal.h zs_edge.run),
  *    slivers that cover a single row (never stepped), and rows whose new
- *    tails hold 1 .. 10 edges (merge_small up to ZS_SMALL_BATCH, the column
- *    lists above), with twins, seams and edges off the screen among them.
+ *    tails hold 1 .. 10 edges and rows with many (the column lists, the
+ *    last edge of the list stepped after the loops), with twins, seams and
+ *    edges off the screen among them.
  * Every frame: zt_guarded_frame and the ray caster in span mode, and the same
  * image byte for byte in zline mode and in span mode without the edge
  * scratch (ZS_CFG_NO_ZLINE: insertion sort and numeric fold only).
@@ -224,7 +225,7 @@ static void test_twins_and_columns(void **state)
 }
 
 /* Runs and small tails at every size of the twin table: few groups a scene
- * (tails of a few edges) and more (tails above ZS_SMALL_BATCH), with and
+ * (tails of a few edges) and more (long tails), with and
  * without random content around them. */
 static void test_runs_and_small_tails(void **state)
 {

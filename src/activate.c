@@ -26,13 +26,13 @@ static void edge_init(zs_edge *e, const zs_vert *a, const zs_vert *b, int32_t y)
     int32_t q0 = zs_asr32(a->x - 8, 4), r0 = a->x - 8 - 16 * q0;
     int32_t t = 16 * y + 8 - a->y; /* in [0, 16) on the edge's first row */
     int32_t x, err, step;
+    const int32_t y_end = zs_first_row(b->y);
     e->den = den;
-    e->y_end = (int16_t)zs_first_row(b->y);
-    if (e->y_end > y + 1) {
+    if (y_end > y + 1) {
         step = (16 * dx) / den;
         if (step * den > 16 * dx)
             step--; /* floor */
-        e->step = step;
+        e->run = zs_edge_run(y_end, step);
         e->rstep = 16 * dx - step * den;
         if (t < 16) {
             /* the first column from the step, without a second division:
@@ -45,8 +45,9 @@ static void edge_init(zs_edge *e, const zs_vert *a, const zs_vert *b, int32_t y)
             e->err = c * den - n;
             return;
         }
-    } else { /* covers one row: never stepped (a division saved, a helper call on M0) */
-        e->step = 0;
+    } else { /* covers one row: never stepped (a division saved, a helper call on M0);
+              * it ends after row y (its end row as y + 1: 0 < y_end) */
+        e->run = zs_edge_run(y + 1, 0);
         e->rstep = 0;
     }
     if (t < 16) {
@@ -253,21 +254,21 @@ static ZS_HOT_INLINE uint16_t new_edge(zs_renderer *r, uint16_t ai, int left_sid
     zs_edge *const edges = r->priv.edges;
     const unsigned shift = r->priv.twin_shift;
     uint32_t *const keys = r->priv.sort_keys;
-    uint32_t key = 0, h = 0, mask = 0;
-    int listed = 0;
-    uint16_t ei;
+    uint16_t ei = ZS_NONE;
     zs_edge *e;
     if (shift) {
         /* the vertices' byte offsets in the pool (multiples of 8, < 2^19) */
         const char *pool = (const char *)r->priv.verts;
+        const uint32_t mask = 0xFFFFFFFFu >> shift;
+        const uint32_t key = (uint32_t)((const char *)a - pool) << 13 |
+                             (uint32_t)((const char *)b - pool) >> 3;
+        uint16_t *const index = (uint16_t *)(void *)(keys + mask + 1u);
+        uint32_t h = (key * 0x9E3779B1u) >> shift;
         int p;
-        mask = 0xFFFFFFFFu >> shift;
-        key = (uint32_t)((const char *)a - pool) << 13 | (uint32_t)((const char *)b - pool) >> 3;
-        h = (key * 0x9E3779B1u) >> shift;
         for (p = ZS_TWIN_PROBES; p > 0; p--, h = (h + 1u) & mask) {
             const uint32_t k = keys[h];
             if (k == key) {
-                ei = ((const uint16_t *)(const void *)(keys + mask + 1u))[h];
+                ei = index[h];
                 e = &edges[ei];
                 if (left_side) {
                     if (e->lead == ZS_NONE) {
@@ -279,25 +280,27 @@ static ZS_HOT_INLINE uint16_t new_edge(zs_renderer *r, uint16_t ai, int left_sid
                     r->priv.active[ai].right = ei;
                     return ei;
                 }
+                ei = ZS_NONE;
             } else if (k == ZS_TWIN_EMPTY) {
-                listed = 1; /* else no room near: not listed */
+                /* listed before the set-up, so nothing of the table stays
+                 * live across it (else no room near: not listed) */
+                ei = r->priv.edge_free[--r->priv.n_edge_free];
+                keys[h] = key;
+                index[h] = ei;
                 break;
             }
         }
     }
-    ei = r->priv.edge_free[--r->priv.n_edge_free];
+    if (ei == ZS_NONE)
+        ei = r->priv.edge_free[--r->priv.n_edge_free];
     e = &edges[ei];
     edge_init(e, a, b, y);
+    /* pad is merge_columns' to set */
     e->lead = left_side ? ai : (uint16_t)ZS_NONE;
     e->trail = left_side ? (uint16_t)ZS_NONE : ai;
-    e->pad = 0;
     r->priv.ael[r->priv.n_ael++] = ei;
     if (!left_side)
         r->priv.active[ai].right = ei;
-    if (listed) {
-        keys[h] = key;
-        ((uint16_t *)(void *)(keys + mask + 1u))[h] = ei;
-    }
     return ei;
 }
 

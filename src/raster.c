@@ -84,8 +84,8 @@ void zs_raster_begin(zs_renderer *r)
 static ZS_INLINE_ALWAYS int fold_edge(zs_renderer *r, zs_edge *keep, uint16_t keep_i, zs_edge *dup)
 {
     zs_active *act = r->priv.active;
-    if (keep->err != dup->err || keep->step != dup->step || keep->rstep != dup->rstep ||
-        keep->den != dup->den || keep->y_end != dup->y_end)
+    if (keep->err != dup->err || keep->run != dup->run || keep->rstep != dup->rstep ||
+        keep->den != dup->den)
         return 0;
     if ((keep->lead != ZS_NONE && dup->lead != ZS_NONE) ||
         (keep->trail != ZS_NONE && dup->trail != ZS_NONE))
@@ -138,8 +138,6 @@ static int merge_columns(zs_renderer *r, int sorted, int n)
         uint16_t h = head[c];
         if (h == ZS_NONE) {
             cols[ng++] = (uint16_t)c;
-            lo = c < lo ? c : lo;
-            hi = c > hi ? c : hi;
         } else if (c == x) {
             /* twins start at the same column; off the screen they are
              * left apart (a column's list there may be long, and the walk
@@ -156,8 +154,14 @@ static int merge_columns(zs_renderer *r, int sorted, int n)
         nb++;
     folded:;
     }
-    /* columns from the right: a few sorted by insertion, many walked */
-    if ((uint32_t)ng * (uint32_t)ng > 4u * (uint32_t)(hi - lo + 1)) {
+    /* columns from the right: a few sorted by insertion, many walked (the
+     * range only looked at where it could be short enough: ng > 4) */
+    if (ng > 4)
+        for (g = 0; g < ng; g++) {
+            lo = cols[g] < lo ? cols[g] : lo;
+            hi = cols[g] > hi ? cols[g] : hi;
+        }
+    if (ng > 4 && (uint32_t)ng * (uint32_t)ng > 4u * (uint32_t)(hi - lo + 1)) {
         ng = 0;
         for (k = hi; k >= lo; k--)
             if (head[k] != ZS_NONE)
@@ -295,9 +299,59 @@ static inline int retire_edge(zs_active *act, const zs_edge *e, int32_t next, ui
     return n_cont;
 }
 
+/* Reads e's run and rstep, x and err (neighbours: on Thumb-2 one paired
+ * load each, which compilers do not form here by themselves) and writes x
+ * and err back. */
+#if defined(__GNUC__) && defined(__thumb2__)
+#define ZS_LOAD_RUN(e, run, rstep)                                                       \
+    __asm__("ldrd %0, %1, [%2, #8]" : "=r"(run), "=r"(rstep) : "r"(e), "m"((e)->run),     \
+            "m"((e)->rstep))
+#define ZS_LOAD_X(e, x, err)                                                             \
+    __asm__("ldrd %0, %1, [%2]" : "=r"(x), "=r"(err) : "r"(e), "m"((e)->x), "m"((e)->err))
+#define ZS_STORE_X(e, x, err)                                                            \
+    __asm__("strd %2, %3, [%4]" : "=m"((e)->x), "=m"((e)->err) : "r"(x), "r"(err), "r"(e))
+#else
+#define ZS_LOAD_RUN(e, run, rstep) ((run) = (e)->run, (rstep) = (e)->rstep)
+#define ZS_LOAD_X(e, x, err) ((x) = (e)->x, (err) = (e)->err)
+#define ZS_STORE_X(e, x, err) ((e)->x = (x), (e)->err = (err))
+#endif
+
+/* e one row down (its run and rstep loaded); returns its new x. */
+static ZS_INLINE_ALWAYS int32_t step_one(zs_edge *e, uint32_t run, int32_t rstep)
+{
+    int32_t x, err;
+    ZS_LOAD_X(e, x, err);
+    x += zs_run_step(run);
+    err -= rstep;
+    if (err < 0) {
+        err += e->den;
+        x++;
+    }
+    ZS_STORE_X(e, x, err);
+    return x;
+}
+
+/* Puts edge ei, now at x, at *at or, where it passed edges before it (rare),
+ * back among them: ael[0, at - ael) is sorted. */
+#if defined(__OPTIMIZE_SIZE__)
+#define ZS_PLACE_INLINE ZS_NOINLINE /* one copy, off the loops' registers */
+#else
+#define ZS_PLACE_INLINE ZS_INLINE_ALWAYS
+#endif
+static ZS_PLACE_INLINE void place(uint16_t *const ael, const zs_edge *edges, uint16_t *at,
+                                  uint16_t ei, int32_t x)
+{
+    for (; at > ael && edges[at[-1]].x > x; at--)
+        at[0] = at[-1];
+    *at = ei;
+}
+
 /* Steps every edge to row y + 1, retires finished ones and keeps the list
  * sorted (an edge that passed its left neighbour is moved back: rare).
- * Planes are not stepped: each is evaluated for the row it is needed on. */
+ * Planes are not stepped: each is evaluated for the row it is needed on.
+ * The last edge's run reads "ends" while the loops run, so they stop there
+ * with no test for the list's end; it is put back and the last edge done
+ * after them. */
 static void step_edges(zs_renderer *r, int32_t y)
 {
     uint16_t *const ael = r->priv.ael;
@@ -307,71 +361,86 @@ static void step_edges(zs_renderer *r, int32_t y)
     uint16_t *const cont = r->priv.in_set;
     const int n = r->priv.n_ael;
     const int32_t next = y + 1;
+    const uint32_t next_hi = (uint32_t)next << 16;
     int i, kept = 0, n_cont = 0;
-    int32_t prev_x = INT32_MIN;
-    /* up to the first edge that retires, every edge keeps its place or moves
-     * back among those before it: the list is rewritten only there */
-    for (i = 0; i < n; i++) {
-        zs_edge *const e = &edges[ael[i]];
-        int32_t x, err;
-        if (next >= e->y_end)
-            break;
-        x = e->x + e->step;
-        err = e->err - e->rstep;
-        if (err < 0) {
-            err += e->den;
-            x++;
-        }
-        e->x = x;
-        e->err = err;
-        if (x >= prev_x) {
-            prev_x = x;
-        } else {
-            const uint16_t ei = ael[i];
-            int j = i;
-            for (; j > 0 && edges[ael[j - 1]].x > x; j--)
-                ael[j] = ael[j - 1];
-            ael[j] = ei;
-        }
-    }
-    kept = i;
-    if (i < n) {
-        /* the free stacks' tops in locals (on M0 each priv field costs a
-         * literal load), written back before anything else takes from them */
-        zs_active *const act = r->priv.active;
-        uint16_t *const efree = r->priv.edge_free, *const afree = r->priv.active_free;
-        unsigned n_efree = r->priv.n_edge_free, n_afree = r->priv.n_active_free;
-        for (; i < n; i++) {
-            const uint16_t ei = ael[i];
-            zs_edge *const e = &edges[ei];
-            int32_t x, err;
-            if (next >= e->y_end) {
-                n_cont = retire_edge(act, e, next, cont, n_cont, afree, &n_afree);
-                efree[n_efree++] = ei;
-                continue;
-            }
-            /* locals: a store through e could otherwise force reloads */
-            x = e->x + e->step;
-            err = e->err - e->rstep;
-            if (err < 0) {
-                err += e->den;
-                x++;
-            }
-            e->x = x;
-            e->err = err;
-            if (x >= prev_x) {
+    if (n > 0) {
+        uint16_t *p = ael, *const last = ael + n - 1;
+        zs_edge *const le = &edges[*last];
+        const uint32_t last_run = le->run;
+        int32_t prev_x = INT32_MIN;
+        le->run = 0; /* ends by any row */
+        /* up to the first edge that retires, every edge keeps its place or
+         * moves back among those before it: the list is rewritten only
+         * there. One word holds the end row and the step; x and err, step
+         * and rstep are neighbours (paired loads and stores where the core
+         * has them). */
+        for (;; p++) {
+            zs_edge *const e = &edges[*p];
+            uint32_t run;
+            int32_t x, rstep;
+            ZS_LOAD_RUN(e, run, rstep);
+            if (zs_run_ends(run, next_hi))
+                break;
+            x = step_one(e, run, rstep);
+            if (x >= prev_x)
                 prev_x = x;
-                ael[kept++] = ei;
-            } else {
-                int j = kept;
-                for (; j > 0 && edges[ael[j - 1]].x > x; j--)
-                    ael[j] = ael[j - 1];
-                ael[j] = ei;
-                kept++;
-            }
+            else
+                place(ael, edges, p, *p, x);
         }
-        r->priv.n_edge_free = (uint16_t)n_efree;
-        r->priv.n_active_free = (uint16_t)n_afree;
+        le->run = last_run;
+        if (p == last && !zs_run_ends(last_run, next_hi)) {
+            const int32_t x = step_one(le, last_run, le->rstep);
+            if (x < prev_x)
+                place(ael, edges, p, *p, x);
+            kept = n;
+        } else {
+            /* the free stacks' tops in locals (on M0 each priv field costs
+             * a literal load), written back before anything else takes
+             * from them */
+            zs_active *const act = r->priv.active;
+            uint16_t *const efree = r->priv.edge_free, *const afree = r->priv.active_free;
+            unsigned n_efree = r->priv.n_edge_free, n_afree = r->priv.n_active_free;
+            uint16_t *out = p;
+            int32_t x;
+            le->run = 0;
+            for (;; p++) {
+                const uint16_t ei = *p;
+                zs_edge *const e = &edges[ei];
+                uint32_t run;
+                int32_t rstep;
+                ZS_LOAD_RUN(e, run, rstep);
+                if (zs_run_ends(run, next_hi)) {
+                    if (p == last) {
+                        le->run = last_run;
+                        if (!zs_run_ends(last_run, next_hi))
+                            break; /* stepped below */
+                    }
+                    /* the one place that retires (a single copy at -Os) */
+                    n_cont = retire_edge(act, e, next, cont, n_cont, afree, &n_afree);
+                    efree[n_efree++] = ei;
+                    if (p == last)
+                        goto retired;
+                    continue;
+                }
+                /* locals: a store through e could otherwise force reloads */
+                x = step_one(e, run, rstep);
+                if (x >= prev_x) {
+                    prev_x = x;
+                    *out++ = ei;
+                } else {
+                    place(ael, edges, out++, ei, x);
+                }
+            }
+            x = step_one(le, last_run, le->rstep);
+            if (x >= prev_x)
+                *out++ = *last;
+            else
+                place(ael, edges, out++, *last, x);
+        retired:
+            kept = (int)(out - ael);
+            r->priv.n_edge_free = (uint16_t)n_efree;
+            r->priv.n_active_free = (uint16_t)n_afree;
+        }
     }
     r->priv.n_ael = (uint16_t)kept;
     r->priv.n_sorted = (uint16_t)kept;

@@ -58,13 +58,17 @@ typedef struct zs_tri {
 typedef struct zs_edge {
     int32_t x;       /* first covered column at/after this edge, this row */
     int32_t err;     /* x * den - numerator, in [0, den) */
-    int32_t step;    /* whole columns per row (floor) */
+    uint32_t run;    /* step << 16 | y_end: the whole columns per row (floor,
+                        |step| < 2^12: an edge stepped at all spans two row
+                        centres, dy > 16) and the first row this edge no
+                        longer covers (0 < y_end < 2^15), one word for the
+                        step loop (add with a shift, compare with a shift) */
     int32_t rstep;   /* remainder per row, in [0, den) */
     int32_t den;     /* 16 * dy (1/16 px units) */
-    int16_t y_end;   /* first row this edge no longer covers */
     uint16_t lead;   /* active triangle this edge starts (its left edge), or ZS_NONE */
     uint16_t trail;  /* active triangle this edge ends (its right edge), or ZS_NONE */
-    uint16_t pad;
+    uint16_t pad;    /* raster.c's column lists */
+    uint16_t spare;
 } zs_edge;
 
 /* An active triangle: its depth plane and span-walk state, valid while it
@@ -581,6 +585,22 @@ static inline uint32_t zs_shr64_lo(uint64_t v, unsigned k)
 static inline int32_t zs_s32(uint32_t u)
 {
     return u < 0x80000000u ? (int32_t)u : -(int32_t)~u - 1;
+}
+
+/* An edge's run word (zs_edge) from its end row and step; its step; whether
+ * it ends by row `row` (compared as the low halves, shifted up: one compare
+ * with a shift on Thumb-2, row << 16 made once a row). */
+static inline uint32_t zs_edge_run(int32_t y_end, int32_t step)
+{
+    return (uint32_t)step << 16 | (uint32_t)y_end;
+}
+static inline int32_t zs_run_step(uint32_t run)
+{
+    return zs_asr32(zs_s32(run), 16);
+}
+static inline int zs_run_ends(uint32_t run, uint32_t row_hi)
+{
+    return row_hi >= run << 16;
 }
 
 /* zs_project (setup.c), the same results, for a vertex with near <= w <= far,

@@ -12,6 +12,13 @@
  *  - Column lists (merge_columns): batches with many edges off either side of
  *    the screen, merged into lists that hold old edges off the screen too
  *    (a column's list there is in no order of x).
+ *  - Runs and small tails: edges stepped many columns a row (near-horizontal
+ *    edges reaching far off either side, clipped at the guard band: the step
+ *    packed with the end row in one word, src/zs_internal.h zs_edge.run),
+ *    slivers that cover a single row (never stepped), and rows whose new
+ *    tails hold 1 .. 10 edges and rows with many (the column lists, the
+ *    last edge of the list stepped after the loops), with twins, seams and
+ *    edges off the screen among them.
  * Every frame: zt_guarded_frame and the ray caster in span mode, and the same
  * image byte for byte in zline mode and in span mode without the edge
  * scratch (ZS_CFG_NO_ZLINE: insertion sort and numeric fold only).
@@ -93,7 +100,68 @@ static void scene(zt_rng *g, zt_scene *sc, int w, int yr, int groups)
     }
 }
 
-static void run_width(int w, uint64_t seed)
+/* Few new edges a row: small fans and pairs (twins, some with seams) on
+ * rows of their own, slivers a fraction of a row high (one row centre or
+ * two), and long flat triangles whose edges cross the screen and beyond in a
+ * few rows. */
+static void scene_runs(zt_rng *g, zt_scene *sc, int w, int yr, int groups)
+{
+    (void)yr;
+    for (int k = 0; k < groups; k++) {
+        int kind = (int)zt_below(g, 4);
+        double ax = zt_uniform(g, -40, w + 40), d = zt_uniform(g, 1.2, 3.5);
+        double ay = (int)zt_range(g, 1, EH - 6) + zt_uniform(g, -0.45, 0.45);
+        int seams = zt_below(g, 3) == 0;
+        if (kind == 0) { /* a fan of 1..4 from an apex: tails of 2..5 edges */
+            int m = 2 + (int)zt_below(g, 4), rim[6], rim2[6];
+            double R = zt_uniform(g, 3, 30), Ry = zt_uniform(g, 1, 12);
+            int apex = vtx(sc, ax, ay, d, rnd_color(g), NULL);
+            for (int i = 0; i < m; i++) {
+                double th = 3.141592653589793 * (0.05 + 0.9 * (i + zt_uniform(g, 0.1, 0.9)) / m);
+                rim[i] = vtx(sc, ax + R * cos(th), ay + 1 + Ry * sin(th), d, rnd_color(g),
+                             seams ? &rim2[i] : NULL);
+            }
+            for (int i = 0; i + 1 < m; i++)
+                zt_scene_tri_front(sc, apex, seams && i % 2 ? rim2[i] : rim[i],
+                                   seams && i % 2 ? rim2[i + 1] : rim[i + 1], rnd_color(g));
+        } else if (kind == 1) { /* slivers: under a row high, or just over */
+            double hgt = zt_below(g, 2) ? zt_uniform(g, 0.05, 0.95) : zt_uniform(g, 1.0, 2.2);
+            double len = zt_uniform(g, 2, 3.0 * w);
+            int a = vtx(sc, ax - len / 2, ay, d, rnd_color(g), NULL);
+            int b = vtx(sc, ax + len / 2, ay + zt_uniform(g, -0.2, 0.2), d, rnd_color(g), NULL);
+            int c = vtx(sc, ax + zt_uniform(g, -len / 2, len / 2), ay + hgt, d * 1.02,
+                        rnd_color(g), NULL);
+            zt_scene_tri_front(sc, a, b, c, rnd_color(g));
+        } else if (kind == 2) { /* long and flat: many columns a row, off both sides */
+            double x0 = -zt_uniform(g, 0.5, 6) * w, x1 = w + zt_uniform(g, 0.5, 6) * w;
+            double dy = zt_uniform(g, 1.2, 6);
+            int a = vtx(sc, x0, ay, d, rnd_color(g), NULL);
+            int b = vtx(sc, x1, ay + zt_uniform(g, -0.5, 0.5) * dy, d * 1.05, rnd_color(g), NULL);
+            int c = vtx(sc, zt_uniform(g, x0, x1), ay + dy, d * 0.95, rnd_color(g), NULL);
+            zt_scene_tri_front(sc, a, b, c, rnd_color(g));
+            if (zt_below(g, 2)) { /* its neighbour across the long edge */
+                int e = vtx(sc, zt_uniform(g, x0, x1), ay - dy, d, rnd_color(g), NULL);
+                zt_scene_tri_front(sc, b, a, e, rnd_color(g));
+            }
+        } else { /* a quad (two twins) of a row or a few */
+            double qw = zt_uniform(g, 1, 25), qh = zt_uniform(g, 0.6, 4);
+            int A2 = -1, B2 = -1;
+            int A = vtx(sc, ax, ay, d, rnd_color(g), seams ? &A2 : NULL);
+            int B = vtx(sc, ax + qw, ay + qh, d * 1.03, rnd_color(g), seams ? &B2 : NULL);
+            int C = vtx(sc, ax + qw + zt_uniform(g, -2, 2), ay + zt_uniform(g, -0.4, 0.4), d,
+                        rnd_color(g), NULL);
+            int D = vtx(sc, ax + zt_uniform(g, -2, 2), ay + qh + zt_uniform(g, -0.4, 0.4), d,
+                        rnd_color(g), NULL);
+            zt_scene_tri_front(sc, A, C, B, rnd_color(g));
+            zt_scene_tri_front(sc, seams ? A2 : A, seams ? B2 : B, D, rnd_color(g));
+        }
+    }
+}
+
+typedef void (*scene_fn)(zt_rng *g, zt_scene *sc, int w, int yr, int groups);
+
+static void run_width_with(int w, uint64_t seed, scene_fn make, int min_groups, int groups,
+                           int randoms)
 {
     unsigned long bad = 0;
     zt_rng g;
@@ -110,8 +178,9 @@ static void run_width(int w, uint64_t seed)
     for (int k = 0; k < SCENES; k++) {
         zt_scene_reset(&sc);
         int yr = (int)zt_range(&g, 0, EH - 4);
-        scene(&g, &sc, w, yr, 6 + (int)zt_below(&g, 30));
-        zt_scene_random(&g, &sc, 10, ZT_SC_PLAIN | ZT_SC_SHARED | ZT_SC_BIG, 0.5);
+        make(&g, &sc, w, yr, min_groups + (int)zt_below(&g, (uint32_t)groups));
+        if (randoms)
+            zt_scene_random(&g, &sc, randoms, ZT_SC_PLAIN | ZT_SC_SHARED | ZT_SC_BIG, 0.5);
         zs_mesh m = zt_scene_mesh(&sc, 1, 1);
         char what[120];
         snprintf(what, sizeof what, "edges: width %d scene %d (row %d, %zu triangles, seed %llx)",
@@ -140,6 +209,11 @@ static void run_width(int w, uint64_t seed)
     ZT_CHECK(bad == 0, "width %d: %lu pixels disagree with the ray caster", w, bad);
 }
 
+static void run_width(int w, uint64_t seed)
+{
+    run_width_with(w, seed, scene, 6, 30, 10);
+}
+
 /* No twin table (width 40), 32 slots (60), 64 (100), 128 (200, 300): twins,
  * seams, full tables and off-screen lists at each. */
 static void test_twins_and_columns(void **state)
@@ -150,10 +224,24 @@ static void test_twins_and_columns(void **state)
         run_width(widths[i], SEED + i);
 }
 
+/* Runs and small tails at every size of the twin table: few groups a scene
+ * (tails of a few edges) and more (long tails), with and
+ * without random content around them. */
+static void test_runs_and_small_tails(void **state)
+{
+    (void)state;
+    static const int widths[] = {40, 60, 100, 200, 300};
+    for (size_t i = 0; i < sizeof widths / sizeof widths[0]; i++) {
+        run_width_with(widths[i], SEED + 0x100 + i, scene_runs, 1, 4, 0);
+        run_width_with(widths[i], SEED + 0x200 + i, scene_runs, 8, 40, 6);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_twins_and_columns),
+        cmocka_unit_test(test_runs_and_small_tails),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

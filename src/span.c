@@ -275,13 +275,23 @@ static inline int32_t edge_side(const uint16_t *f)
 
 /* An entering member b against a top that stays in the set: behind it
  * wherever both are (no crossing either), a new top (every member's crossing
- * changes: pick again), or behind it with a crossing to keep. */
+ * changes: pick again, unless b is nearer than every member wherever they
+ * meet while no crossing is pending: then b is the top outright and every
+ * crossing stays none), or behind it with a crossing to keep. */
 #define b_vs_top(b)                                                                        \
     do {                                                                                   \
         if (always_nearer(top, (b))) {                                                     \
             if ((b)->zlo < others_lo)                                                      \
                 others_lo = (b)->zlo;                                                      \
-        } else if (always_nearer((b), top) || enter_vs_top(&w, (b), top, cur)) {          \
+        } else if (always_nearer((b), top)) {                                              \
+            if (min_cross == NO_CROSS && (b)->zhi <= others_lo) {                          \
+                if (top->zlo < others_lo)                                                  \
+                    others_lo = top->zlo;                                                  \
+                top = (b);                                                                 \
+            } else {                                                                       \
+                top = 0;                                                                   \
+            }                                                                              \
+        } else if (enter_vs_top(&w, (b), top, cur)) {                                      \
             top = 0;                                                                       \
         } else {                                                                           \
             if ((b)->cross < min_cross)                                                    \
@@ -409,6 +419,7 @@ single:
         const zs_edge *const e = &edges[*p++];
         int32_t t, l; /* the edge's triangles, < 0 for none */
         int handover; /* the top left at this edge with no crossing pending */
+        zs_active *entering;
         ADVANCE_TO(e->x);
         /* in/out counters: a span inverted by rounding is never entered
          * (they count modulo 256: entering is 0 -> 1, leaving 1 -> 0) */
@@ -439,7 +450,12 @@ single:
                     } else if (top) {
                         if (a->cross == min_cross && min_cross != NO_CROSS)
                             min_cross = next_cross(r, ns, top);
+#if defined(__OPTIMIZE_SIZE__) /* one copy of b_vs_top: smaller and faster there */
+                        entering = b;
+                        goto vs_top; /* (ns >= 2: the check after it fails too) */
+#else
                         b_vs_top(b);
+#endif
                     }
                     continue;
                 }
@@ -477,8 +493,11 @@ single:
                         top = a;
                     } /* else the pick after this column's events includes it */
                 } else {
-                    zs_active *b = a;
-                    b_vs_top(b);
+                    entering = a;
+#if defined(__OPTIMIZE_SIZE__)
+                vs_top:
+#endif
+                    b_vs_top(entering);
                 }
             } else {
                 odd--;

@@ -50,7 +50,11 @@
  *     triangles along random diagonals, 2..4 layers at depths far apart,
  *     close, 0..2 position units apart, interpenetrating or folded, exact
  *     coplanar duplicates of a layer submitted later with rotated vertex
- *     order (same or copied vertices): ray caster (exact ties to the earlier
+ *     order (same or copied vertices), and wedges whose depth sweeps through
+ *     the layers (an entering triangle nearer than the top by range but not
+ *     nearer than a member that comes in front after the top has left; the
+ *     new top outright only where its range is nearer than every member's):
+ *     ray caster (exact ties to the earlier
  *     triangle), span == zline in ID16, RGB565 flat and RGB888 Gouraud.
  *     The z-buffer mode's shortcuts (zline.c: owner runs decided whole by
  *     the depth ranges, spans that overlap no other written directly) are
@@ -1196,7 +1200,7 @@ static void test_planes_per_row(void **state)
 #define LG_H 72
 #define LG_SCENES 160
 
-static unsigned long g_lg_scenes, g_lg_tris, g_lg_dups, g_lg_dup_px, g_lg_bytes;
+static unsigned long g_lg_scenes, g_lg_tris, g_lg_dups, g_lg_dup_px, g_lg_bytes, g_lg_wedges;
 
 /* A grid of nx x ny quads, each split along a random diagonal, over the
  * pixel rectangle (x0, y0) + (i cw, j ch), depth d (1 + tx u + ty v) plus
@@ -1269,6 +1273,19 @@ static void test_layers(void **state)
             }
             firsts[l] = lg_grid(&g, &sc, x0, y0, cw, ch, nx, ny, d, tx, ty, bump);
             counts[l] = (int)sc.nt - firsts[l];
+        }
+        /* wedges: large triangles whose depth sweeps through the layers
+         * within a few pixels (behind a top where a nearer triangle enters,
+         * in front of it soon after that top has left) */
+        int nwedge = (int)zt_below(&g, 4);
+        for (int i = 0; i < nwedge; i++) {
+            int v[3];
+            for (int q = 0; q < 3; q++)
+                v[q] = zt_scene_vertex_px(&sc, zt_uniform(&g, -10, LG_W + 10),
+                                          zt_uniform(&g, -10, LG_H + 10),
+                                          d * zt_uniform(&g, 0.6, 1.6), rand_color(&g));
+            zt_scene_tri_front(&sc, v[0], v[1], v[2], rand_color(&g));
+            g_lg_wedges++;
         }
         /* exact coplanar duplicates of a layer, later in the submission,
          * each triangle's vertices rotated (same indices, or copied vertices) */
@@ -1470,7 +1487,7 @@ int main(void)
            "scenes %dx%d (%lu triangles, %lu needles, %lu of them steep), %lu whose middle column "
            "shows another triangle at the bottom than at the top, %lu Gouraud pixels (max deviation %.3f, %lu channels beyond 0.5) "
            "and %lu flat pixels against the barycentric reference; layers: %lu scenes (%lu "
-           "triangles, %lu duplicated layers, %lu exact-duplicate tie pixels), %lu bytes "
+           "triangles, %lu duplicated layers, %lu wedges, %lu exact-duplicate tie pixels), %lu bytes "
            "compared; single layer: %lu scenes %dx%d (%lu triangles, %lu slivers, %lu loose), %lu "
            "bytes compared; %lu renders; ray caster: %lu of %lu covered pixels excluded as near ties, "
            "%lu disagreeing; %d failed\n",
@@ -1479,7 +1496,7 @@ int main(void)
            CS_W, CS_H, g_cs_tris, g_cs_max_batch, g_cs_left, g_cs_right, g_cs_bytes, g_pl_scenes,
            PL_W, PL_H, g_pl_tris, g_pl_needles, g_pl_steep, g_pl_flips, g_pl_gouraud_px,
            g_pl_maxdev, g_pl_off_half, g_pl_flat_px, g_lg_scenes, g_lg_tris, g_lg_dups,
-           g_lg_dup_px, g_lg_bytes, g_sl_scenes, SL_W, SL_H, g_sl_tris, g_sl_slivers, g_sl_loose,
+           g_lg_wedges, g_lg_dup_px, g_lg_bytes, g_sl_scenes, SL_W, SL_H, g_sl_tris, g_sl_slivers, g_sl_loose,
            g_sl_bytes, g_renders, zt_tot.excluded, zt_tot.px, g_raycast_bad, rc);
     fflush(stdout);
     return rc;

@@ -47,7 +47,8 @@
  *     without ZS_CFG_ABUFFER; on, guards and padding intact, the statuses
  *     the header gives (zs_frame_antialias needs the flag and span mode,
  *     zs_draw_opacity a transparent frame), and rows no stored record comes
- *     within a pixel of equal the aliased frame's.
+ *     within a pixel of equal the aliased frame's (when its pools dropped
+ *     nothing: it also keeps triangles that cover sub-samples but no centre).
  */
 #include <string.h>
 
@@ -1466,9 +1467,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 if (y >= 0 && y < H)
                     near_rec[y] = 1;
         }
+        /* (only where the A-buffer frame lost nothing to a full pool: it also
+         * stores triangles that cover sub-samples but no centre, so with a
+         * small pool it can drop one that the aliased frame kept) */
         size_t rb = (size_t)W * g_aa.bpp;
+        int aa_complete = a->tris_dropped == 0 && a->verts_dropped == 0 && a->records_skipped == 0;
         for (int y = 0; y < H; y++)
-            if (g_aa.rendered[y] && !near_rec[y])
+            if (aa_complete && g_aa.rendered[y] && !near_rec[y])
                 FZ_CHECK(memcmp(g_aa.img + (size_t)y * rb, g_span.img + (size_t)y * rb, rb) == 0,
                          "A-buffer row %d differs from the aliased row, no record near it", y);
     } else if (s->aa & 8u) {

@@ -85,7 +85,7 @@ static ZS_INLINE_ALWAYS int fold_edge(zs_renderer *r, zs_edge *keep, uint16_t ke
 {
     zs_active *act = r->priv.active;
     if (keep->err != dup->err || keep->run != dup->run || keep->rstep != dup->rstep ||
-        keep->den != dup->den)
+        keep->dy != dup->dy)
         return 0;
     if ((keep->lead != ZS_NONE && dup->lead != ZS_NONE) ||
         (keep->trail != ZS_NONE && dup->trail != ZS_NONE))
@@ -324,7 +324,7 @@ static ZS_INLINE_ALWAYS int32_t step_one(zs_edge *e, uint32_t run, int32_t rstep
     x += zs_run_step(run);
     err -= rstep;
     if (err < 0) {
-        err += e->den;
+        err += e->dy;
         x++;
     }
     ZS_STORE_X(e, x, err);

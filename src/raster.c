@@ -176,19 +176,27 @@ static int merge_columns(zs_renderer *r, int sorted, int n)
     }
     /* merge from the back: each new edge after the old ones right of it
      * (the list has room; the tail is read from the lists only) */
-    i = sorted - 1;
-    k = sorted + nb - 1;
     {
         /* the leftmost old edge stops every scan that starts at or right of
          * it: no bound test in the moving loop (unless all have moved: a
          * list off the screen is in no order of x) */
         const int32_t x0 = sorted > 0 ? edges[ael[0]].x : INT32_MAX;
+#if defined(__OPTIMIZE_SIZE__)
+        /* indices: fewer registers live in the loops (M0) */
+        i = sorted - 1;
+        k = sorted + nb - 1;
+#else
+        /* one past the next old edge to move and the next slot to fill: a
+         * move is a load, a compare and a store */
+        uint16_t *src = ael + sorted, *dst = ael + sorted + nb;
+#endif
         for (g = 0; g < ng; g++) {
             const uint16_t c = cols[g];
             uint16_t b = head[c];
             head[c] = ZS_NONE;
             for (; b != ZS_NONE; b = edges[b].pad) {
                 const int32_t bx = edges[b].x;
+#if defined(__OPTIMIZE_SIZE__)
                 if (bx >= x0 && i >= 0) {
                     while (edges[ael[i]].x > bx)
                         ael[k--] = ael[i--];
@@ -197,6 +205,19 @@ static int merge_columns(zs_renderer *r, int sorted, int n)
                         ael[k--] = ael[i];
                 }
                 ael[k--] = b;
+#else
+                if (bx >= x0 && src > ael) {
+                    uint16_t v;
+                    while (edges[v = src[-1]].x > bx) {
+                        *--dst = v;
+                        src--;
+                    }
+                } else {
+                    while (src > ael)
+                        *--dst = *--src;
+                }
+                *--dst = b;
+#endif
             }
         }
     }

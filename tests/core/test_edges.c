@@ -20,8 +20,8 @@
  *    last edge of the list stepped after the loops), with twins, seams and
  *    edges off the screen among them.
  *  - Tall edges: from far above the screen to far below it (64 x 800, guard
- *    band 4 half-heights), dy past 2^15 in 1/16 px: zs_edge keeps dy in 16
- *    bits, unsigned, and its remainders in 1/16 (exact: zs_edge).
+ *    band 4 half-heights), dy past 2^15 in 1/16 px: zs_edge keeps dy and
+ *    both remainders (in 1/16, exact: zs_edge) in 16 bits, unsigned.
  * Every frame: zt_guarded_frame and the ray caster in span mode, and the same
  * image byte for byte in zline mode and in span mode without the edge
  * scratch (ZS_CFG_NO_ZLINE: insertion sort and numeric fold only).

@@ -16,39 +16,41 @@
 #define ZS_HOT_INLINE ZS_INLINE_ALWAYS
 #endif
 
-/* Sets e to cover the edge a -> b (a above b) starting at row y. */
+/* Sets e to cover the edge a -> b (a above b) starting at row y. The
+ * remainders are found against den = 16 dy and stored divided by 16 (exact
+ * for the row steps, zs_edge). */
 static void edge_init(zs_edge *e, const zs_vert *a, const zs_vert *b, int32_t y)
 {
-    int32_t dx = b->x - a->x, dy = b->y - a->y; /* |dx|, |dy| < 2^19 */
+    int32_t dx = b->x - a->x, dy = b->y - a->y; /* |dx|, dy < 2^16 (int16 vertices), dy > 0 */
     int32_t den = 16 * dy;
     /* (x(yc) - 0.5) * den at yc = 16 y + 8, split as 16 * q0 * dy + m so the
      * part left to divide is small: q0 = floor((x_a - 8) / 16). */
     int32_t q0 = zs_asr32(a->x - 8, 4), r0 = a->x - 8 - 16 * q0;
     int32_t t = 16 * y + 8 - a->y; /* in [0, 16) on the edge's first row */
-    int32_t x, err, step;
+    int32_t x, err, step, rem;
     const int32_t y_end = zs_first_row(b->y);
-    e->den = den;
+    e->dy = (uint16_t)dy;
     if (y_end > y + 1) {
-        step = (16 * dx) / den;
-        if (step * den > 16 * dx)
+        step = dx / dy;
+        if (step * dy > dx)
             step--; /* floor */
+        rem = dx - step * dy; /* in [0, dy) */
         e->run = zs_edge_run(y_end, step);
-        e->rstep = 16 * dx - step * den;
         if (t < 16) {
             /* the first column from the step, without a second division:
              * with dx = step * dy + rem, m = r0 dy + t dx = 16 dy qa + n for
              * r0 + t step = 16 qa + ra, n = ra dy + t rem in [0, 2 den) */
             const int32_t A = r0 + t * step, qa = zs_asr32(A, 4);
-            const int32_t n = (A - 16 * qa) * dy + t * (e->rstep >> 4);
+            const int32_t n = (A - 16 * qa) * dy + t * rem;
             const int32_t c = n > den ? 2 : n > 0 ? 1 : 0; /* ceil(n / den) */
             e->x = q0 + qa + c;
-            e->err = c * den - n;
+            e->frac = (uint32_t)((c * den - n) >> 4) << 16 | (uint32_t)rem;
             return;
         }
     } else { /* covers one row: never stepped (a division saved, a helper call on M0);
               * it ends after row y (its end row as y + 1: 0 < y_end) */
         e->run = zs_edge_run(y + 1, 0);
-        e->rstep = 0;
+        rem = 0;
     }
     if (t < 16) {
         int32_t m = r0 * dy + t * dx; /* |m| < 2^24 */
@@ -66,7 +68,7 @@ static void edge_init(zs_edge *e, const zs_vert *a, const zs_vert *b, int32_t y)
         err = (int32_t)(q * den - m);
     }
     e->x = x;
-    e->err = err;
+    e->frac = (uint32_t)(err >> 4) << 16 | (uint32_t)rem;
 }
 
 /* Depth planes hold window depth in Q40 (10 bits below the vertices' Q30, so

@@ -84,8 +84,7 @@ void zs_raster_begin(zs_renderer *r)
 static ZS_INLINE_ALWAYS int fold_edge(zs_renderer *r, zs_edge *keep, uint16_t keep_i, zs_edge *dup)
 {
     zs_active *act = r->priv.active;
-    if (keep->err != dup->err || keep->run != dup->run || keep->rstep != dup->rstep ||
-        keep->den != dup->den)
+    if (keep->frac != dup->frac || keep->run != dup->run || keep->dy != dup->dy)
         return 0;
     if ((keep->lead != ZS_NONE && dup->lead != ZS_NONE) ||
         (keep->trail != ZS_NONE && dup->trail != ZS_NONE))
@@ -176,19 +175,27 @@ static int merge_columns(zs_renderer *r, int sorted, int n)
     }
     /* merge from the back: each new edge after the old ones right of it
      * (the list has room; the tail is read from the lists only) */
-    i = sorted - 1;
-    k = sorted + nb - 1;
     {
         /* the leftmost old edge stops every scan that starts at or right of
          * it: no bound test in the moving loop (unless all have moved: a
          * list off the screen is in no order of x) */
         const int32_t x0 = sorted > 0 ? edges[ael[0]].x : INT32_MAX;
+#if defined(__OPTIMIZE_SIZE__)
+        /* indices: fewer registers live in the loops (M0) */
+        i = sorted - 1;
+        k = sorted + nb - 1;
+#else
+        /* one past the next old edge to move and the next slot to fill: a
+         * move is a load, a compare and a store */
+        uint16_t *src = ael + sorted, *dst = ael + sorted + nb;
+#endif
         for (g = 0; g < ng; g++) {
             const uint16_t c = cols[g];
             uint16_t b = head[c];
             head[c] = ZS_NONE;
             for (; b != ZS_NONE; b = edges[b].pad) {
                 const int32_t bx = edges[b].x;
+#if defined(__OPTIMIZE_SIZE__)
                 if (bx >= x0 && i >= 0) {
                     while (edges[ael[i]].x > bx)
                         ael[k--] = ael[i--];
@@ -197,6 +204,19 @@ static int merge_columns(zs_renderer *r, int sorted, int n)
                         ael[k--] = ael[i];
                 }
                 ael[k--] = b;
+#else
+                if (bx >= x0 && src > ael) {
+                    uint16_t v;
+                    while (edges[v = src[-1]].x > bx) {
+                        *--dst = v;
+                        src--;
+                    }
+                } else {
+                    while (src > ael)
+                        *--dst = *--src;
+                }
+                *--dst = b;
+#endif
             }
         }
     }
@@ -299,35 +319,67 @@ static inline int retire_edge(zs_active *act, const zs_edge *e, int32_t next, ui
     return n_cont;
 }
 
-/* Reads e's run and rstep, x and err (neighbours: on Thumb-2 one paired
- * load each, which compilers do not form here by themselves) and writes x
- * and err back. */
+/* Reads e's x and remainders (neighbours: on Thumb-2 one paired load,
+ * which compilers do not form here by themselves) and writes them back. */
 #if defined(__GNUC__) && defined(__thumb2__)
-#define ZS_LOAD_RUN(e, run, rstep)                                                       \
-    __asm__("ldrd %0, %1, [%2, #8]" : "=r"(run), "=r"(rstep) : "r"(e), "m"((e)->run),     \
-            "m"((e)->rstep))
-#define ZS_LOAD_X(e, x, err)                                                             \
-    __asm__("ldrd %0, %1, [%2]" : "=r"(x), "=r"(err) : "r"(e), "m"((e)->x), "m"((e)->err))
-#define ZS_STORE_X(e, x, err)                                                            \
-    __asm__("strd %2, %3, [%4]" : "=m"((e)->x), "=m"((e)->err) : "r"(x), "r"(err), "r"(e))
+#define ZS_LOAD_X(e, x, f)                                                               \
+    __asm__("ldrd %0, %1, [%2]" : "=r"(x), "=r"(f) : "r"(e), "m"((e)->x), "m"((e)->frac))
+#define ZS_STORE_X(e, x, f)                                                              \
+    __asm__("strd %2, %3, [%4]" : "=m"((e)->x), "=m"((e)->frac) : "r"(x), "r"(f), "r"(e))
 #else
-#define ZS_LOAD_RUN(e, run, rstep) ((run) = (e)->run, (rstep) = (e)->rstep)
-#define ZS_LOAD_X(e, x, err) ((x) = (e)->x, (err) = (e)->err)
-#define ZS_STORE_X(e, x, err) ((e)->x = (x), (e)->err = (err))
+#define ZS_LOAD_X(e, x, f) ((x) = (e)->x, (f) = (e)->frac)
+#define ZS_STORE_X(e, x, f) ((e)->x = (x), (e)->frac = (f))
 #endif
 
-/* e one row down (its run and rstep loaded); returns its new x. */
-static ZS_INLINE_ALWAYS int32_t step_one(zs_edge *e, uint32_t run, int32_t rstep)
+/* e one row down (its run loaded); returns its new x. The remainder is the
+ * high half of frac, the step's remainder the low half: one subtraction
+ * with a shift takes one from the other, its borrow carries the column. */
+static ZS_INLINE_ALWAYS int32_t step_one(zs_edge *e, uint32_t run)
 {
-    int32_t x, err;
-    ZS_LOAD_X(e, x, err);
+    int32_t x;
+    uint32_t f;
+    ZS_LOAD_X(e, x, f);
     x += zs_run_step(run);
-    err -= rstep;
-    if (err < 0) {
-        err += e->den;
-        x++;
+#if defined(__GNUC__) && defined(__thumb2__)
+    {
+        uint32_t t;
+        __asm__("subs %[f], %[f], %[f], lsl #16\n\t"
+                "bcs 1f\n\t"
+                "ldrh %[t], %[dy]\n\t"
+                "add %[f], %[f], %[t], lsl #16\n\t"
+                "add %[x], %[x], #1\n"
+                "1:"
+                : [f] "+r"(f), [x] "+r"(x), [t] "=&r"(t)
+                : [dy] "m"(e->dy)
+                : "cc");
     }
-    ZS_STORE_X(e, x, err);
+#elif defined(__GNUC__) && defined(__thumb__) && !defined(__clang__)
+    {
+        uint32_t t;
+        /* (GCC hands Thumb-1 inline assembly the divided syntax) */
+        __asm__(".syntax unified\n\t"
+                "lsls %[t], %[f], #16\n\t"
+                "subs %[f], %[f], %[t]\n\t"
+                "bcs 1f\n\t"
+                "ldrh %[t], %[dy]\n\t"
+                "lsls %[t], %[t], #16\n\t"
+                "adds %[f], %[f], %[t]\n\t"
+                "adds %[x], %[x], #1\n"
+                "1:\n\t"
+                ".syntax divided"
+                : [f] "+l"(f), [x] "+l"(x), [t] "=&l"(t)
+                : [dy] "m"(e->dy)
+                : "cc");
+    }
+#else
+    if (f < f << 16) { /* err < rstep: borrow, the column carries */
+        f += ((uint32_t)e->dy << 16) - (f << 16);
+        x++;
+    } else {
+        f -= f << 16;
+    }
+#endif
+    ZS_STORE_X(e, x, f);
     return x;
 }
 
@@ -345,6 +397,12 @@ static ZS_PLACE_INLINE void place(uint16_t *const ael, const zs_edge *edges, uin
         at[0] = at[-1];
     *at = ei;
 }
+
+#if defined(__OPTIMIZE_SIZE__)
+#define ZS_LATE_INC 1 /* step_edges' second loop: p moves at its end */
+#else
+#define ZS_LATE_INC 0
+#endif
 
 /* Steps every edge to row y + 1, retires finished ones and keeps the list
  * sorted (an edge that passed its left neighbour is moved back: rare).
@@ -371,17 +429,16 @@ static void step_edges(zs_renderer *r, int32_t y)
         le->run = 0; /* ends by any row */
         /* up to the first edge that retires, every edge keeps its place or
          * moves back among those before it: the list is rewritten only
-         * there. One word holds the end row and the step; x and err, step
-         * and rstep are neighbours (paired loads and stores where the core
+         * there. One word holds the end row and the step, one both
+         * remainders, next to x (a paired load and store where the core
          * has them). */
         for (;; p++) {
             zs_edge *const e = &edges[*p];
-            uint32_t run;
-            int32_t x, rstep;
-            ZS_LOAD_RUN(e, run, rstep);
+            const uint32_t run = e->run;
+            int32_t x;
             if (zs_run_ends(run, next_hi))
                 break;
-            x = step_one(e, run, rstep);
+            x = step_one(e, run);
             if (x >= prev_x)
                 prev_x = x;
             else
@@ -389,7 +446,7 @@ static void step_edges(zs_renderer *r, int32_t y)
         }
         le->run = last_run;
         if (p == last && !zs_run_ends(last_run, next_hi)) {
-            const int32_t x = step_one(le, last_run, le->rstep);
+            const int32_t x = step_one(le, last_run);
             if (x < prev_x)
                 place(ael, edges, p, *p, x);
             kept = n;
@@ -403,14 +460,17 @@ static void step_edges(zs_renderer *r, int32_t y)
             uint16_t *out = p;
             int32_t x;
             le->run = 0;
-            for (;; p++) {
-                const uint16_t ei = *p;
+            /* speed builds move p past each edge as they read it (GCC then
+             * rotates the loop: M4 cubes -3.5k instructions a frame), so the
+             * edge read was the last one when p > last; at -Os p moves at
+             * the loop's end (ZS_LATE_INC: the post-increment costs M0 up to
+             * 6k) */
+            for (;; p += ZS_LATE_INC) {
+                const uint16_t ei = ZS_LATE_INC ? *p : *p++;
                 zs_edge *const e = &edges[ei];
-                uint32_t run;
-                int32_t rstep;
-                ZS_LOAD_RUN(e, run, rstep);
+                const uint32_t run = e->run;
                 if (zs_run_ends(run, next_hi)) {
-                    if (p == last) {
+                    if (ZS_LATE_INC ? p == last : p > last) {
                         le->run = last_run;
                         if (!zs_run_ends(last_run, next_hi))
                             break; /* stepped below */
@@ -418,12 +478,12 @@ static void step_edges(zs_renderer *r, int32_t y)
                     /* the one place that retires (a single copy at -Os) */
                     n_cont = retire_edge(act, e, next, cont, n_cont, afree, &n_afree);
                     efree[n_efree++] = ei;
-                    if (p == last)
+                    if (ZS_LATE_INC ? p == last : p > last)
                         goto retired;
                     continue;
                 }
                 /* locals: a store through e could otherwise force reloads */
-                x = step_one(e, run, rstep);
+                x = step_one(e, run);
                 if (x >= prev_x) {
                     prev_x = x;
                     *out++ = ei;
@@ -431,7 +491,7 @@ static void step_edges(zs_renderer *r, int32_t y)
                     place(ael, edges, out++, ei, x);
                 }
             }
-            x = step_one(le, last_run, le->rstep);
+            x = step_one(le, last_run);
             if (x >= prev_x)
                 *out++ = *last;
             else

@@ -50,25 +50,30 @@ typedef struct zs_tri {
 #define ZS_TRI_TEXTURED 0x04u  /* textured: its light always in colour planes, so
                                   zs_fill_gouraud hands its spans to texture.c */
 
-/* An edge stepped down the rows (28 bytes). Column = ceil(x - 0.5) exactly:
+/* An edge stepped down the rows (20 bytes). Column = ceil(x - 0.5) exactly:
  * x is the integer column, err the remainder of the exact rational.
  * Where two triangles of a mesh share an edge, one record serves both (as in
  * Quake's edges with two surfaces): the walk leaves one triangle and enters
- * the other at it, and it is stepped once. */
+ * the other at it, and it is stepped once.
+ *
+ * The remainders are kept in whole 1/16 px steps: with den = 16 dy the exact
+ * remainder is 16 err + f for a fixed f in [0, 16) (the row step's remainder
+ * is a multiple of 16), and 16 err + f < 16 rstep exactly when err < rstep,
+ * so dropping f changes no column, and err, rstep and dy fit 16 bits. */
 typedef struct zs_edge {
     int32_t x;       /* first covered column at/after this edge, this row */
-    int32_t err;     /* x * den - numerator, in [0, den) */
+    uint32_t frac;   /* err << 16 | rstep: the remainder / 16 (x * 16 dy -
+                        numerator, floored) and the remainder per row / 16,
+                        both in [0, dy); next to x for one paired load */
     uint32_t run;    /* step << 16 | y_end: the whole columns per row (floor,
                         |step| < 2^12: an edge stepped at all spans two row
                         centres, dy > 16) and the first row this edge no
                         longer covers (0 < y_end < 2^15), one word for the
                         step loop (add with a shift, compare with a shift) */
-    int32_t rstep;   /* remainder per row, in [0, den) */
-    int32_t den;     /* 16 * dy (1/16 px units) */
     uint16_t lead;   /* active triangle this edge starts (its left edge), or ZS_NONE */
     uint16_t trail;  /* active triangle this edge ends (its right edge), or ZS_NONE */
+    uint16_t dy;     /* rows of 1/16 px it spans (0 < dy < 2^16: int16 vertices) */
     uint16_t pad;    /* raster.c's column lists */
-    uint16_t spare;
 } zs_edge;
 
 /* An active triangle: its depth plane and span-walk state, valid while it

@@ -346,7 +346,7 @@ const char *zs_strerror(zs_status status);
 #define ZS_VERTEX_BYTES 8u        /* screen x, y (28.4 in int16) and depth */
 #define ZS_VERTEX_SHADE_BYTES 4u  /* per-vertex colour or light, and fog */
 #define ZS_TRIANGLE_BYTES 12u     /* three vertex indices, bucket link, colour */
-#define ZS_EDGE_BYTES 28u
+#define ZS_EDGE_BYTES 20u
 #define ZS_ACTIVE_BYTES 32u       /* per active triangle: span state, flat pixel */
 #define ZS_ACTIVE_PLANE_BYTES 24u /* per active triangle: depth plane (not with
                                      ZS_CFG_PRIORITY_ONLY) */
@@ -368,7 +368,7 @@ const char *zs_strerror(zs_status status);
  * takes one slot per two), with the features `flags` (ZS_CFG_*) leaves in.
  * Includes alignment slack; a compile-time constant when the arguments are.
  * Per pool: vertices 8 B (+4 B shade), triangle records 12 B, row buckets
- * 2 B per row, edges 28 B, active triangles 32 B + a 24 B depth plane (none
+ * 2 B per row, edges 20 B, active triangles 32 B + a 24 B depth plane (none
  * with ZS_CFG_PRIORITY_ONLY) (+36 B colour planes), the
  * z-buffer line 10 B per column and 4 B; with ZS_CFG_MONO 3 B per column, with
  * ZS_CFG_LINES 6 B per column (4 with ZS_CFG_MONO too), 14 B and 1 bit

@@ -19,6 +19,9 @@
  *    tails hold 1 .. 10 edges and rows with many (the column lists, the
  *    last edge of the list stepped after the loops), with twins, seams and
  *    edges off the screen among them.
+ *  - Tall edges: from far above the screen to far below it (64 x 800, guard
+ *    band 4 half-heights), dy past 2^15 in 1/16 px: zs_edge keeps dy and
+ *    both remainders (in 1/16, exact: zs_edge) in 16 bits, unsigned.
  * Every frame: zt_guarded_frame and the ray caster in span mode, and the same
  * image byte for byte in zline mode and in span mode without the edge
  * scratch (ZS_CFG_NO_ZLINE: insertion sort and numeric fold only).
@@ -158,33 +161,77 @@ static void scene_runs(zt_rng *g, zt_scene *sc, int w, int yr, int groups)
     }
 }
 
+/* Edges from far above the screen to far below it, within the guard band
+ * (up to 4 half-heights either side at these sizes): dy past 2^15 in 1/16
+ * px, the width of zs_edge.dy. Tall strips of quads (their shared diagonals
+ * tall too), fans from an apex far above, and slanted slivers a few pixels
+ * wide. */
+static void scene_tall(zt_rng *g, zt_scene *sc, int w, int yr, int groups)
+{
+    const double h = sc->h;
+    (void)yr;
+    for (int k = 0; k < groups; k++) {
+        int kind = (int)zt_below(g, 3);
+        double top = h * zt_uniform(g, -1.45, -0.3), bot = h * zt_uniform(g, 1.3, 2.45);
+        double x0 = zt_uniform(g, -0.4, 1.4) * w, d = zt_uniform(g, 1.2, 3.5);
+        if (kind == 0) { /* a strip of quads */
+            int n = 1 + (int)zt_below(g, 5), A[6], B[6];
+            double dx = zt_uniform(g, 1, 8), lean = zt_uniform(g, -1.2, 1.2) * w;
+            for (int i = 0; i <= n; i++) {
+                A[i] = vtx(sc, x0 + i * dx, top + zt_uniform(g, -2, 2), d, rnd_color(g), NULL);
+                B[i] = vtx(sc, x0 + lean + i * dx, bot + zt_uniform(g, -2, 2), d * 1.1,
+                           rnd_color(g), NULL);
+            }
+            for (int i = 0; i < n; i++) {
+                zt_scene_tri_front(sc, A[i], A[i + 1], B[i], rnd_color(g));
+                zt_scene_tri_front(sc, A[i + 1], B[i + 1], B[i], rnd_color(g));
+            }
+        } else if (kind == 1) { /* a fan from far above to a rim far below */
+            int m = 2 + (int)zt_below(g, 5), rim[7];
+            int apex = vtx(sc, x0, top, d, rnd_color(g), NULL);
+            for (int i = 0; i < m; i++)
+                rim[i] = vtx(sc, x0 + zt_uniform(g, -0.6, 0.6) * w + 3.0 * i, bot - 5.0 * i,
+                             d * 1.05, rnd_color(g), NULL);
+            for (int i = 0; i + 1 < m; i++)
+                zt_scene_tri_front(sc, apex, rim[i], rim[i + 1], rnd_color(g));
+        } else { /* a slanted sliver, its middle vertex on the screen */
+            double x1 = zt_uniform(g, -0.4, 1.4) * w;
+            int a = vtx(sc, x0, top, d, rnd_color(g), NULL);
+            int b = vtx(sc, x1, bot, d * 0.9, rnd_color(g), NULL);
+            int c = vtx(sc, (x0 + x1) / 2 + zt_uniform(g, -4, 4), zt_uniform(g, 0, h), d,
+                        rnd_color(g), NULL);
+            zt_scene_tri_front(sc, a, b, c, rnd_color(g));
+        }
+    }
+}
+
 typedef void (*scene_fn)(zt_rng *g, zt_scene *sc, int w, int yr, int groups);
 
-static void run_width_with(int w, uint64_t seed, scene_fn make, int min_groups, int groups,
-                           int randoms)
+static void run_size_with(int w, int h, uint64_t seed, scene_fn make, int min_groups,
+                          int groups, int randoms)
 {
     unsigned long bad = 0;
     zt_rng g;
     zt_rng_seed(&g, seed);
     zt_ctx c, cn;
-    zt_ctx_init_flags(&c, w, EH, 1500, 6000, 1500, 0);
-    zt_ctx_init_flags(&cn, w, EH, 1500, 6000, 1500, ZS_CFG_NO_ZLINE);
+    zt_ctx_init_flags(&c, w, h, 1500, 6000, 1500, 0);
+    zt_ctx_init_flags(&cn, w, h, 1500, 6000, 1500, ZS_CFG_NO_ZLINE);
     zs_camera cam;
     zt_camera_std(&cam, ZS_FX(1) / 2, ZS_FX(60));
     zt_scene sc;
-    zt_scene_init(&sc, w, EH, 256);
-    zt_gframe *f = zt_gframe_new(w, EH), *fz = zt_gframe_new(w, EH), *fn = zt_gframe_new(w, EH);
-    static const int bands[] = {1, 5, EH};
+    zt_scene_init(&sc, w, h, 256);
+    zt_gframe *f = zt_gframe_new(w, h), *fz = zt_gframe_new(w, h), *fn = zt_gframe_new(w, h);
+    const int bands[] = {1, 5, h};
     for (int k = 0; k < SCENES; k++) {
         zt_scene_reset(&sc);
-        int yr = (int)zt_range(&g, 0, EH - 4);
+        int yr = (int)zt_range(&g, 0, h - 4);
         make(&g, &sc, w, yr, min_groups + (int)zt_below(&g, (uint32_t)groups));
         if (randoms)
             zt_scene_random(&g, &sc, randoms, ZT_SC_PLAIN | ZT_SC_SHARED | ZT_SC_BIG, 0.5);
         zs_mesh m = zt_scene_mesh(&sc, 1, 1);
         char what[120];
-        snprintf(what, sizeof what, "edges: width %d scene %d (row %d, %zu triangles, seed %llx)",
-                 w, k, yr, sc.nt, (unsigned long long)seed);
+        snprintf(what, sizeof what, "edges: %dx%d scene %d (row %d, %zu triangles, seed %llx)",
+                 w, h, k, yr, sc.nt, (unsigned long long)seed);
         zt_guarded_frame(&c, &cam, ZS_MODE_SPAN, &m, 1, NULL, f, bands[k % 3]);
         ZT_ST(f->draw_st, ZS_OK);
         ZT_CHECK(f->st.tris_dropped == 0 && f->st.records_skipped == 0 &&
@@ -193,10 +240,10 @@ static void run_width_with(int w, uint64_t seed, scene_fn make, int min_groups, 
         bad += zt_vs_raycast(f, what);
         zt_guarded_frame(&c, &cam, ZS_MODE_ZLINE, &m, 1, NULL, fz, bands[(k + 1) % 3]);
         zt_guarded_frame(&cn, &cam, ZS_MODE_SPAN, &m, 1, NULL, fn, bands[(k + 2) % 3]);
-        long d = zt_first_diff(f->img, fz->img, (size_t)w * EH * 2);
+        long d = zt_first_diff(f->img, fz->img, (size_t)w * (size_t)h * 2);
         ZT_CHECK(d < 0, "%s: span and zline differ at pixel (%ld,%ld)", what, d / 2 % w,
                  d / 2 / w);
-        d = zt_first_diff(f->img, fn->img, (size_t)w * EH * 2);
+        d = zt_first_diff(f->img, fn->img, (size_t)w * (size_t)h * 2);
         ZT_CHECK(d < 0, "%s: span with and without the edge scratch differ at pixel (%ld,%ld)",
                  what, d / 2 % w, d / 2 / w);
     }
@@ -206,7 +253,13 @@ static void run_width_with(int w, uint64_t seed, scene_fn make, int min_groups, 
     zt_scene_free(&sc);
     zt_ctx_free(&c);
     zt_ctx_free(&cn);
-    ZT_CHECK(bad == 0, "width %d: %lu pixels disagree with the ray caster", w, bad);
+    ZT_CHECK(bad == 0, "%dx%d: %lu pixels disagree with the ray caster", w, h, bad);
+}
+
+static void run_width_with(int w, uint64_t seed, scene_fn make, int min_groups, int groups,
+                           int randoms)
+{
+    run_size_with(w, EH, seed, make, min_groups, groups, randoms);
 }
 
 static void run_width(int w, uint64_t seed)
@@ -237,11 +290,22 @@ static void test_runs_and_small_tails(void **state)
     }
 }
 
+/* Edges taller than 2^15 in 1/16 px (64 x 800: a guard of 4 half-heights
+ * either side, dy up to 3.9 screen heights), alone and among random
+ * content. */
+static void test_tall_edges(void **state)
+{
+    (void)state;
+    run_size_with(64, 800, SEED + 0x300, scene_tall, 2, 10, 0);
+    run_size_with(64, 800, SEED + 0x301, scene_tall, 6, 20, 6);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_twins_and_columns),
         cmocka_unit_test(test_runs_and_small_tails),
+        cmocka_unit_test(test_tall_edges),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

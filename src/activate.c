@@ -106,6 +106,18 @@ static int64_t min3_64(int64_t a, int64_t b, int64_t c)
     return m < c ? m : c;
 }
 
+#ifdef ZS_SPLIT_MUL
+/* a b - c d for |a|, |c| <= 2^30 and |b|, |d| <= 2^14 from 32-bit products:
+ * a = 2^16 ah + al with al in [0, 2^16), so the high sum is below 2^29 and
+ * the low one below 2^31 in magnitude (inline: at -Os a call each). */
+static ZS_INLINE_ALWAYS int64_t cross16(int32_t a, int32_t b, int32_t c, int32_t d)
+{
+    const int32_t h = zs_asr32(a, 16) * b - zs_asr32(c, 16) * d;
+    const int32_t l = (int32_t)((uint32_t)a & 0xFFFFu) * b - (int32_t)((uint32_t)c & 0xFFFFu) * d;
+    return (int64_t)h * 65536 + l;
+}
+#endif
+
 /* Depth plane of the triangle s (canonical order, sorted by y), origin at
  * the pixel centre (ox, oy) next to s[0]; marks it steep where needed. */
 static ZS_INLINE_ALWAYS void depth_plane(zs_active *a, zs_active_plane *p, const zs_vert *s[3],
@@ -117,10 +129,23 @@ static ZS_INLINE_ALWAYS void depth_plane(zs_active *a, zs_active_plane *p, const
     int64_t z0, w16, h16;
     /* |dz| <= 2^30, |dx|, |dy| < 2^18: products of 32-bit values */
     int32_t z1 = (int32_t)dz1, z2 = (int32_t)dz2;
-    a->zdx = zs_recip_muldiv(area2, zs_smul32(z1, (int32_t)dy2) - zs_smul32(z2, (int32_t)dy1), 14,
-                             ZS_DEPTH_GRADIENT_LIMIT);
-    p->zdy = zs_recip_muldiv(area2, zs_smul32(z2, (int32_t)dx1) - zs_smul32(z1, (int32_t)dx2), 14,
-                             ZS_DEPTH_GRADIENT_LIMIT);
+    int64_t nx, ny;
+#ifdef ZS_SPLIT_MUL
+    /* Cortex-M0: where every |dx|, |dy| <= 2^14 (any triangle of a screen
+     * with guard * max(width, height) < 1024), two 32-bit products each
+     * (cross16), not zs_smul32's four */
+    if ((((uint32_t)dx1 + 16384u) | ((uint32_t)dy1 + 16384u) | ((uint32_t)dx2 + 16384u) |
+         ((uint32_t)dy2 + 16384u)) <= 32768u) {
+        nx = cross16(z1, (int32_t)dy2, z2, (int32_t)dy1);
+        ny = cross16(z2, (int32_t)dx1, z1, (int32_t)dx2);
+    } else
+#endif
+    {
+        nx = zs_smul32(z1, (int32_t)dy2) - zs_smul32(z2, (int32_t)dy1);
+        ny = zs_smul32(z2, (int32_t)dx1) - zs_smul32(z1, (int32_t)dx2);
+    }
+    a->zdx = zs_recip_muldiv(area2, nx, 14, ZS_DEPTH_GRADIENT_LIMIT);
+    p->zdy = zs_recip_muldiv(area2, ny, 14, ZS_DEPTH_GRADIENT_LIMIT);
     /* Below 2^32 each, the spread is under 2 * 2^28 * 2^17 = 2^46: the
      * common case needs no products. There the row constant comes in one
      * step: with the origin's terms inside the shift (multiples of 16 shift

@@ -198,8 +198,19 @@ int64_t zs_recip_muldiv(const zs_recip *rc, int64_t num, int bits, int64_t limit
         q = 0;
     else if (sh <= 0)
         q = (uint64_t)limit;
-    else
+    else {
+#ifdef ZS_SPLIT_MUL
+        /* the shift by words (a 64-bit shift is a helper call on Cortex-M0) */
+        const uint64_t m = zs_umul32((uint32_t)n, rc->inv); /* n < 2^31 */
+        const uint32_t hi = (uint32_t)(m >> 32);
+        if (sh >= 32)
+            q = hi >> (sh - 32);
+        else
+            q = (uint64_t)(hi >> sh) << 32 | zs_shr64_lo(m, (unsigned)sh);
+#else
         q = zs_umul32((uint32_t)n, rc->inv) >> sh; /* n < 2^31 */
+#endif
+    }
     if (q > (uint64_t)limit)
         q = (uint64_t)limit;
     return ((num < 0) != rc->neg) ? -(int64_t)q : (int64_t)q;

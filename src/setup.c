@@ -43,7 +43,7 @@ static int64_t mul_floor_shift(int64_t v, uint32_t inv, unsigned sh)
 void zs_project_fast_out(const zs_proj *p, int32_t xc, int32_t yc, int32_t w, zs_vert *v,
                          int inside)
 {
-    zs_project_fast(p, xc, yc, w, v, inside);
+    zs_project_body(p, xc, yc, w, v, inside, 0); /* inline here: no second call */
 }
 #endif
 

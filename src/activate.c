@@ -239,6 +239,24 @@ static ZS_HOT_INLINE void sort_canonical(const zs_renderer *r, const zs_tri *t,
     v[2] = p2;
 }
 
+/* A lazy plane's record (span and zline modes) is read by nothing until
+ * zs_make_plane makes it (span.c's depth_at, zline.c's new_row_depth): until
+ * then it holds the canonical vertices, so that neither zs_make_plane nor
+ * zs_continue_edge sorts them again. */
+static ZS_INLINE_ALWAYS void stash_canonical(zs_active_plane *pl, const zs_vert *s[3])
+{
+    pl->zcur = (int64_t)(uintptr_t)s[0];
+    pl->zrow = (int64_t)(uintptr_t)s[1];
+    pl->zdy = (int64_t)(uintptr_t)s[2];
+}
+
+static ZS_INLINE_ALWAYS void unstash_canonical(const zs_active_plane *pl, const zs_vert *s[3])
+{
+    s[0] = (const zs_vert *)(uintptr_t)pl->zcur;
+    s[1] = (const zs_vert *)(uintptr_t)pl->zrow;
+    s[2] = (const zs_vert *)(uintptr_t)pl->zdy;
+}
+
 void zs_anchor_depth(const zs_renderer *r, const zs_active *a, zs_active_plane *pl, int32_t xa,
                      int32_t y)
 {
@@ -367,6 +385,7 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     if (r->priv.mode == ZS_MODE_SPAN || r->priv.mode == ZS_MODE_ZLINE) {
         /* the span walk or the z-buffer line makes the plane if it ever evaluates one */
         a->flags |= ZS_ACT_LAZY;
+        stash_canonical(&r->priv.aplane[ai], s);
     } else if (r->priv.mode != ZS_MODE_PRIORITY) { /* priority: decided by record order */
         zs_active_plane *pl = &r->priv.aplane[ai];
         plane_made = 1;
@@ -408,7 +427,7 @@ void zs_make_plane(zs_renderer *r, zs_active *a, int32_t y)
     zs_recip area2;
     const uint16_t ai = (uint16_t)(a - r->priv.active);
     zs_active_plane *pl = &r->priv.aplane[ai];
-    sort_canonical(r, &r->priv.tris[a->tri], s);
+    unstash_canonical(pl, s); /* made lazy by zs_activate (span, zline) */
     zs_recip_init(&area2, zs_area2_inline(s[0], s[1], s[2]));
     depth_plane(a, pl, s, &area2, zs_asr32(s[0]->x, 4), zs_asr32(s[0]->y, 4), a->y0);
     a->flags &= (uint8_t)~ZS_ACT_LAZY;
@@ -433,7 +452,10 @@ void zs_continue_edge(zs_renderer *r, uint16_t ai, int32_t y)
     const zs_vert *s[3];
     int left_side = !(a->flags & ZS_ACT_LONG_LEFT);
     uint16_t ei;
-    sort_canonical(r, &r->priv.tris[a->tri], s);
+    if (a->flags & ZS_ACT_LAZY)
+        unstash_canonical(&r->priv.aplane[ai], s);
+    else
+        sort_canonical(r, &r->priv.tris[a->tri], s);
     ei = new_edge(r, ai, left_side, s[1], s[2], y);
     if (left_side && (a->flags & ZS_ACT_STEEP))
         zs_anchor_depth(r, a, &r->priv.aplane[ai], zs_clampi(r->priv.edges[ei].x, 0, r->cfg.width),

@@ -55,7 +55,7 @@ static const uint16_t k_recip15[128] = {
 };
 
 /* floor(2^31 / d) for d in [2^15, 2^16) (at most 2^16). */
-static uint32_t recip15(uint32_t d)
+static ZS_INLINE_ALWAYS uint32_t recip15(uint32_t d)
 {
     uint32_t x = k_recip15[(d >> 8) - 128u], p;
     /* one Newton step x += x (2^31 - d x) / 2^31: |2^31 - d x| < 2^23, so

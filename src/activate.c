@@ -357,6 +357,7 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     int64_t cross;
     zs_recip area2;
     int long_left, plane_made = 0; /* area2 holds the area's reciprocal */
+    const int lazy = r->priv.mode == ZS_MODE_SPAN || r->priv.mode == ZS_MODE_ZLINE;
     if (r->priv.n_active_free < 1 || r->priv.n_edge_free < 2) {
         r->stats.records_skipped++; /* capacity policy: the triangle is skipped */
         return 0;
@@ -372,20 +373,23 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     a->inside = 0;
     a->set_pos = 0;
     a->cross = -1; /* zline.c: no row depth cached */
-    a->flags = long_left ? ZS_ACT_LONG_LEFT : 0;
     a->y_end = (int16_t)zs_first_row(s[2]->y);
-    if (r->priv.mode == ZS_MODE_SPAN || r->priv.mode == ZS_MODE_ZLINE)
+    if (lazy) {
+        /* the span walk or the z-buffer line makes the plane if it ever
+         * evaluates one */
+        a->flags = long_left ? ZS_ACT_LONG_LEFT | ZS_ACT_LAZY : ZS_ACT_LAZY;
         depth_range(a, s);
+    } else {
+        a->flags = long_left ? ZS_ACT_LONG_LEFT : 0;
+    }
     long_edge = new_edge(r, ai, long_left, s[0], s[2], y);
     if (y < zs_first_row(s[1]->y))
         short_edge = new_edge(r, ai, !long_left, s[0], s[1], y);
     else
         short_edge = new_edge(r, ai, !long_left, s[1], s[2], y);
     a->y0 = (int16_t)y;
-    if (r->priv.mode == ZS_MODE_SPAN || r->priv.mode == ZS_MODE_ZLINE) {
-        /* the span walk or the z-buffer line makes the plane if it ever evaluates one */
-        a->flags |= ZS_ACT_LAZY;
-        stash_canonical(&r->priv.aplane[ai], s);
+    if (lazy) {
+        stash_canonical(&r->priv.aplane[ai], s); /* for zs_make_plane, zs_continue_edge */
     } else if (r->priv.mode != ZS_MODE_PRIORITY) { /* priority: decided by record order */
         zs_active_plane *pl = &r->priv.aplane[ai];
         plane_made = 1;

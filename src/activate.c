@@ -121,7 +121,8 @@ static ZS_INLINE_ALWAYS int64_t cross16(int32_t a, int32_t b, int32_t c, int32_t
 /* Depth plane of the triangle s (canonical order, sorted by y), origin at
  * the pixel centre (ox, oy) next to s[0]; marks it steep where needed. */
 static ZS_INLINE_ALWAYS void depth_plane(zs_active *a, zs_active_plane *p, const zs_vert *s[3],
-                                         const zs_recip *area2, int32_t ox, int32_t oy, int32_t y)
+                                         const zs_recip *area2, int32_t ox, int32_t oy, int32_t y,
+                                         int small)
 {
     int64_t dx1 = (int64_t)s[1]->x - s[0]->x, dy1 = (int64_t)s[1]->y - s[0]->y;
     int64_t dx2 = (int64_t)s[2]->x - s[0]->x, dy2 = (int64_t)s[2]->y - s[0]->y;
@@ -130,11 +131,13 @@ static ZS_INLINE_ALWAYS void depth_plane(zs_active *a, zs_active_plane *p, const
     /* |dz| <= 2^30, |dx|, |dy| < 2^18: products of 32-bit values */
     int32_t z1 = (int32_t)dz1, z2 = (int32_t)dz2;
     int64_t nx, ny;
+    (void)small;
 #ifdef ZS_SPLIT_MUL
     /* Cortex-M0: where every |dx|, |dy| <= 2^14 (any triangle of a screen
      * with guard * max(width, height) < 1024), two 32-bit products each
-     * (cross16), not zs_smul32's four */
-    if ((((uint32_t)dx1 + 16384u) | ((uint32_t)dy1 + 16384u) | ((uint32_t)dx2 + 16384u) |
+     * (cross16), not zs_smul32's four; in zs_make_plane only (small: the
+     * hot caller, one copy of the code) */
+    if (small && (((uint32_t)dx1 + 16384u) | ((uint32_t)dy1 + 16384u) | ((uint32_t)dx2 + 16384u) |
          ((uint32_t)dy2 + 16384u)) <= 32768u) {
         nx = cross16(z1, (int32_t)dy2, z2, (int32_t)dy1);
         ny = cross16(z2, (int32_t)dx1, z1, (int32_t)dx2);
@@ -395,7 +398,7 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
         plane_made = 1;
         zs_recip_init(&area2, cross);
         /* the depth plane from the canonical order: equal triangles, equal planes */
-        depth_plane(a, pl, s, &area2, zs_asr32(s[0]->x, 4), zs_asr32(s[0]->y, 4), y);
+        depth_plane(a, pl, s, &area2, zs_asr32(s[0]->x, 4), zs_asr32(s[0]->y, 4), y, 0);
         if (a->flags & ZS_ACT_STEEP) {
             r->priv.steep = 1;
             zs_anchor_depth(r, a, pl,
@@ -433,7 +436,7 @@ void zs_make_plane(zs_renderer *r, zs_active *a, int32_t y)
     zs_active_plane *pl = &r->priv.aplane[ai];
     unstash_canonical(pl, s); /* made lazy by zs_activate (span, zline) */
     zs_recip_init(&area2, zs_area2_inline(s[0], s[1], s[2]));
-    depth_plane(a, pl, s, &area2, zs_asr32(s[0]->x, 4), zs_asr32(s[0]->y, 4), a->y0);
+    depth_plane(a, pl, s, &area2, zs_asr32(s[0]->x, 4), zs_asr32(s[0]->y, 4), a->y0, 1);
     a->flags &= (uint8_t)~ZS_ACT_LAZY;
     if (a->flags & ZS_ACT_STEEP) {
         /* anchored on this row at its left edge, as every row is from here
@@ -477,5 +480,5 @@ ZS_COLD void zs_canonical_vertices(const zs_renderer *r, const zs_tri *t, const 
 ZS_COLD void zs_record_depth_plane(zs_active *a, zs_active_plane *p, const zs_vert *s[3],
                                    const zs_recip *area2, int32_t ox, int32_t oy, int32_t y)
 {
-    depth_plane(a, p, s, area2, ox, oy, y);
+    depth_plane(a, p, s, area2, ox, oy, y, 0);
 }

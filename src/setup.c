@@ -453,13 +453,14 @@ static ZS_INLINE_ALWAYS void plain_simd(plain_run *p, const uint16_t *idx, uint3
 
 #if defined(__GNUC__) && defined(__ARM_ARCH_6M__)
 #define CULL_ASM_M0 1
-/* Cortex-M0's loop for differences below 2^14 and n < 32768: the back
+/* Cortex-M0's loop for differences below 2^14 and n < 32768 (t0 the first
+ * one's number in the draw): the back
  * faces skipped in an assembly loop of 27 instructions each (the compiler's
  * spills a dozen values), which stops at a front face. Each vertex is one
  * word, x in its low half: sxth(b - ax) is bx - ax (the difference fits
  * int16), b >> 16 is by; the two products (below 2^28) compare as
  * plain_tri's 32-bit cull. */
-static ZS_INLINE_ALWAYS void plain_m0(plain_run *p, const uint16_t *idx, uint32_t n)
+static ZS_INLINE_ALWAYS void plain_m0(plain_run *p, const uint16_t *idx, uint32_t n, uint32_t t0)
 {
     const zs_vert *const pool = p->pool;
     const uint16_t *const start = idx, *const end = idx + 3u * n;
@@ -501,7 +502,7 @@ static ZS_INLINE_ALWAYS void plain_m0(plain_run *p, const uint16_t *idx, uint32_
         if (idx == end)
             break; /* the rest were back faces: counted at the end */
         /* t from 3 t < 98304 halfwords: (3 t * 21846) >> 16 = t + (2 t >> 16) */
-        t = ((uint32_t)(idx - start) * 21846u) >> 16;
+        t = t0 + (((uint32_t)(idx - start) * 21846u) >> 16);
         {
             const zs_vert *a = &pool[idx[0]], *b = &pool[idx[1]], *c = &pool[idx[2]];
             box3(a, b, c, &xmin, &xmax, &ymin, &ymax);
@@ -552,12 +553,16 @@ static ZS_NOINLINE void setup_run_plain(zs_renderer *r, const uint16_t *idx, uin
     if (dim < 0) { /* no such path here */
 #endif
 #ifdef CULL_ASM_M0
-        if (n < 32768u)
-            plain_m0(&p, idx, n);
-        else
+        /* in runs below 32768 triangles (plain_m0's t), one copy of the code */
+        uint32_t run;
+        for (t = 0; t < n; t += run) {
+            run = n - t < 32767u ? n - t : 32767u;
+            plain_m0(&p, idx + 3u * t, run, t);
+        }
+#else
+        for (t = 0; t < n; t++, idx += 3)
+            plain_tri(&p, idx, t, 1);
 #endif
-            for (t = 0; t < n; t++, idx += 3)
-                plain_tri(&p, idx, t, 1);
     } else {
         for (t = 0; t < n; t++, idx += 3)
             plain_tri(&p, idx, t, 0);

@@ -108,10 +108,23 @@ static int64_t min3_64(int64_t a, int64_t b, int64_t c)
     return m < c ? m : c;
 }
 
+#ifdef ZS_SPLIT_MUL
+/* a b - c d for |a|, |c| <= 2^30 and |b|, |d| <= 2^14 from 32-bit products:
+ * a = 2^16 ah + al with al in [0, 2^16), so the high sum is below 2^29 and
+ * the low one below 2^31 in magnitude (inline: at -Os a call each). */
+static ZS_INLINE_ALWAYS int64_t cross16(int32_t a, int32_t b, int32_t c, int32_t d)
+{
+    const int32_t h = zs_asr32(a, 16) * b - zs_asr32(c, 16) * d;
+    const int32_t l = (int32_t)((uint32_t)a & 0xFFFFu) * b - (int32_t)((uint32_t)c & 0xFFFFu) * d;
+    return (int64_t)h * 65536 + l;
+}
+#endif
+
 /* Depth plane of the triangle s (canonical order, sorted by y), origin at
  * the pixel centre (ox, oy) next to s[0]; marks it steep where needed. */
 static ZS_INLINE_ALWAYS void depth_plane(zs_active *a, zs_active_plane *p, const zs_vert *s[3],
-                                         const zs_recip *area2, int32_t ox, int32_t oy, int32_t y)
+                                         const zs_recip *area2, int32_t ox, int32_t oy, int32_t y,
+                                         int small)
 {
     int64_t dx1 = (int64_t)s[1]->x - s[0]->x, dy1 = (int64_t)s[1]->y - s[0]->y;
     int64_t dx2 = (int64_t)s[2]->x - s[0]->x, dy2 = (int64_t)s[2]->y - s[0]->y;
@@ -119,10 +132,25 @@ static ZS_INLINE_ALWAYS void depth_plane(zs_active *a, zs_active_plane *p, const
     int64_t z0, w16, h16;
     /* |dz| <= 2^30, |dx|, |dy| < 2^18: products of 32-bit values */
     int32_t z1 = (int32_t)dz1, z2 = (int32_t)dz2;
-    a->zdx = zs_recip_muldiv(area2, zs_smul32(z1, (int32_t)dy2) - zs_smul32(z2, (int32_t)dy1), 14,
-                             ZS_DEPTH_GRADIENT_LIMIT);
-    p->zdy = zs_recip_muldiv(area2, zs_smul32(z2, (int32_t)dx1) - zs_smul32(z1, (int32_t)dx2), 14,
-                             ZS_DEPTH_GRADIENT_LIMIT);
+    int64_t nx, ny;
+    (void)small;
+#ifdef ZS_SPLIT_MUL
+    /* Cortex-M0: where every |dx|, |dy| <= 2^14 (any triangle of a screen
+     * with guard * max(width, height) < 1024), two 32-bit products each
+     * (cross16), not zs_smul32's four; in zs_make_plane only (small: the
+     * hot caller, one copy of the code) */
+    if (small && (((uint32_t)dx1 + 16384u) | ((uint32_t)dy1 + 16384u) | ((uint32_t)dx2 + 16384u) |
+         ((uint32_t)dy2 + 16384u)) <= 32768u) {
+        nx = cross16(z1, (int32_t)dy2, z2, (int32_t)dy1);
+        ny = cross16(z2, (int32_t)dx1, z1, (int32_t)dx2);
+    } else
+#endif
+    {
+        nx = zs_smul32(z1, (int32_t)dy2) - zs_smul32(z2, (int32_t)dy1);
+        ny = zs_smul32(z2, (int32_t)dx1) - zs_smul32(z1, (int32_t)dx2);
+    }
+    a->zdx = zs_recip_muldiv(area2, nx, 14, ZS_DEPTH_GRADIENT_LIMIT);
+    p->zdy = zs_recip_muldiv(area2, ny, 14, ZS_DEPTH_GRADIENT_LIMIT);
     /* Below 2^32 each, the spread is under 2 * 2^28 * 2^17 = 2^46: the
      * common case needs no products. There the row constant comes in one
      * step: with the origin's terms inside the shift (multiples of 16 shift
@@ -214,6 +242,24 @@ static ZS_HOT_INLINE void sort_canonical(const zs_renderer *r, const zs_tri *t,
     v[0] = p0;
     v[1] = p1;
     v[2] = p2;
+}
+
+/* A lazy plane's record (span and zline modes) is read by nothing until
+ * zs_make_plane makes it (span.c's depth_at, zline.c's new_row_depth): until
+ * then it holds the canonical vertices, so that neither zs_make_plane nor
+ * zs_continue_edge sorts them again. */
+static ZS_INLINE_ALWAYS void stash_canonical(zs_active_plane *pl, const zs_vert *s[3])
+{
+    pl->zcur = (int64_t)(uintptr_t)s[0];
+    pl->zrow = (int64_t)(uintptr_t)s[1];
+    pl->zdy = (int64_t)(uintptr_t)s[2];
+}
+
+static ZS_INLINE_ALWAYS void unstash_canonical(const zs_active_plane *pl, const zs_vert *s[3])
+{
+    s[0] = (const zs_vert *)(uintptr_t)pl->zcur;
+    s[1] = (const zs_vert *)(uintptr_t)pl->zrow;
+    s[2] = (const zs_vert *)(uintptr_t)pl->zdy;
 }
 
 void zs_anchor_depth(const zs_renderer *r, const zs_active *a, zs_active_plane *pl, int32_t xa,
@@ -316,6 +362,7 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     int64_t cross;
     zs_recip area2;
     int long_left, plane_made = 0; /* area2 holds the area's reciprocal */
+    const int lazy = r->priv.mode == ZS_MODE_SPAN || r->priv.mode == ZS_MODE_ZLINE;
     if (r->priv.n_active_free < 1 || r->priv.n_edge_free < 2) {
         r->stats.records_skipped++; /* capacity policy: the triangle is skipped */
         return 0;
@@ -331,25 +378,29 @@ int zs_activate(zs_renderer *r, uint16_t ti, int32_t y)
     a->inside = 0;
     a->set_pos = 0;
     a->cross = -1; /* zline.c: no row depth cached */
-    a->flags = long_left ? ZS_ACT_LONG_LEFT : 0;
     a->y_end = (int16_t)zs_first_row(s[2]->y);
-    if (r->priv.mode == ZS_MODE_SPAN || r->priv.mode == ZS_MODE_ZLINE)
+    if (lazy) {
+        /* the span walk or the z-buffer line makes the plane if it ever
+         * evaluates one */
+        a->flags = long_left ? ZS_ACT_LONG_LEFT | ZS_ACT_LAZY : ZS_ACT_LAZY;
         depth_range(a, s);
+    } else {
+        a->flags = long_left ? ZS_ACT_LONG_LEFT : 0;
+    }
     long_edge = new_edge(r, ai, long_left, s[0], s[2], y);
     if (y < zs_first_row(s[1]->y))
         short_edge = new_edge(r, ai, !long_left, s[0], s[1], y);
     else
         short_edge = new_edge(r, ai, !long_left, s[1], s[2], y);
     a->y0 = (int16_t)y;
-    if (r->priv.mode == ZS_MODE_SPAN || r->priv.mode == ZS_MODE_ZLINE) {
-        /* the span walk or the z-buffer line makes the plane if it ever evaluates one */
-        a->flags |= ZS_ACT_LAZY;
+    if (lazy) {
+        stash_canonical(&r->priv.aplane[ai], s); /* for zs_make_plane, zs_continue_edge */
     } else if (r->priv.mode != ZS_MODE_PRIORITY) { /* priority: decided by record order */
         zs_active_plane *pl = &r->priv.aplane[ai];
         plane_made = 1;
         zs_recip_init(&area2, cross);
         /* the depth plane from the canonical order: equal triangles, equal planes */
-        depth_plane(a, pl, s, &area2, zs_asr32(s[0]->x, 4), zs_asr32(s[0]->y, 4), y);
+        depth_plane(a, pl, s, &area2, zs_asr32(s[0]->x, 4), zs_asr32(s[0]->y, 4), y, 0);
         if (a->flags & ZS_ACT_STEEP) {
             r->priv.steep = 1;
             zs_anchor_depth(r, a, pl,
@@ -385,9 +436,9 @@ void zs_make_plane(zs_renderer *r, zs_active *a, int32_t y)
     zs_recip area2;
     const uint16_t ai = (uint16_t)(a - r->priv.active);
     zs_active_plane *pl = &r->priv.aplane[ai];
-    sort_canonical(r, &r->priv.tris[a->tri], s);
+    unstash_canonical(pl, s); /* made lazy by zs_activate (span, zline) */
     zs_recip_init(&area2, zs_area2_inline(s[0], s[1], s[2]));
-    depth_plane(a, pl, s, &area2, zs_asr32(s[0]->x, 4), zs_asr32(s[0]->y, 4), a->y0);
+    depth_plane(a, pl, s, &area2, zs_asr32(s[0]->x, 4), zs_asr32(s[0]->y, 4), a->y0, 1);
     a->flags &= (uint8_t)~ZS_ACT_LAZY;
     if (a->flags & ZS_ACT_STEEP) {
         /* anchored on this row at its left edge, as every row is from here
@@ -410,7 +461,10 @@ void zs_continue_edge(zs_renderer *r, uint16_t ai, int32_t y)
     const zs_vert *s[3];
     int left_side = !(a->flags & ZS_ACT_LONG_LEFT);
     uint16_t ei;
-    sort_canonical(r, &r->priv.tris[a->tri], s);
+    if (a->flags & ZS_ACT_LAZY)
+        unstash_canonical(&r->priv.aplane[ai], s);
+    else
+        sort_canonical(r, &r->priv.tris[a->tri], s);
     ei = new_edge(r, ai, left_side, s[1], s[2], y);
     if (left_side && (a->flags & ZS_ACT_STEEP))
         zs_anchor_depth(r, a, &r->priv.aplane[ai], zs_clampi(r->priv.edges[ei].x, 0, r->cfg.width),
@@ -428,5 +482,5 @@ ZS_COLD void zs_canonical_vertices(const zs_renderer *r, const zs_tri *t, const 
 ZS_COLD void zs_record_depth_plane(zs_active *a, zs_active_plane *p, const zs_vert *s[3],
                                    const zs_recip *area2, int32_t ox, int32_t oy, int32_t y)
 {
-    depth_plane(a, p, s, area2, ox, oy, y);
+    depth_plane(a, p, s, area2, ox, oy, y, 0);
 }

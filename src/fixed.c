@@ -55,7 +55,7 @@ static const uint16_t k_recip15[128] = {
 };
 
 /* floor(2^31 / d) for d in [2^15, 2^16) (at most 2^16). */
-static uint32_t recip15(uint32_t d)
+static ZS_INLINE_ALWAYS uint32_t recip15(uint32_t d)
 {
     uint32_t x = k_recip15[(d >> 8) - 128u], p;
     /* one Newton step x += x (2^31 - d x) / 2^31: |2^31 - d x| < 2^23, so
@@ -171,14 +171,38 @@ uint32_t zs_recip61(uint32_t d)
 #endif
 }
 
+#ifdef ZS_SPLIT_MUL
+/* Leading zeros of v > 0 by zs_norm_shift's steps (Cortex-M0 has no clz:
+ * __clzsi2 is a call). */
+static ZS_INLINE_ALWAYS int clz32_split(uint32_t v)
+{
+    uint32_t n;
+    return v >= 0x80000000u ? 0 : (int)zs_norm_shift(v, &n) + 1;
+}
+#endif
+
 void zs_recip_init(zs_recip *rc, int64_t d)
 {
     uint64_t a = d < 0 ? (uint64_t)0 - (uint64_t)d : (uint64_t)d;
+#ifdef ZS_SPLIT_MUL
+    /* by words: no 64-bit clz or shift helper (|d| < 2^63: hi < 2^31) */
+    const uint32_t hi = (uint32_t)(a >> 32), lo = (uint32_t)(a & 0xFFFFFFFFu);
+    int e;
+    if (hi == 0) {
+        e = clz32_split(lo);
+        a = lo << e;
+    } else {
+        const int k = 32 - clz32_split(hi); /* 1..31 */
+        e = -k;
+        a = lo >> k | hi << (32 - k);
+    }
+#else
     int e = (int)clz64(a) - 32; /* a * 2^e in [2^31, 2^32) */
     if (e >= 0)
         a <<= e;
     else
         a >>= -e;
+#endif
     /* (2^63 - 1) / a, in (2^31, 2^32) */
     rc->inv = zs_udiv64_32(0x7FFFFFFFu, 0xFFFFFFFFu, (uint32_t)a);
     rc->exp = e;
@@ -198,8 +222,19 @@ int64_t zs_recip_muldiv(const zs_recip *rc, int64_t num, int bits, int64_t limit
         q = 0;
     else if (sh <= 0)
         q = (uint64_t)limit;
-    else
+    else {
+#ifdef ZS_SPLIT_MUL
+        /* the shift by words (a 64-bit shift is a helper call on Cortex-M0) */
+        const uint64_t m = zs_umul32((uint32_t)n, rc->inv); /* n < 2^31 */
+        const uint32_t hi = (uint32_t)(m >> 32);
+        if (sh >= 32)
+            q = hi >> (sh - 32);
+        else
+            q = (uint64_t)(hi >> sh) << 32 | zs_shr64_lo(m, (unsigned)sh);
+#else
         q = zs_umul32((uint32_t)n, rc->inv) >> sh; /* n < 2^31 */
+#endif
+    }
     if (q > (uint64_t)limit)
         q = (uint64_t)limit;
     return ((num < 0) != rc->neg) ? -(int64_t)q : (int64_t)q;

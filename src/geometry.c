@@ -875,8 +875,10 @@ static ZS_NOINLINE int indices_valid(const uint16_t *idx, uint32_t tris, uint32_
     for (; idx != end; idx++)
         bad |= last - *idx;
 #else
-    for (; idx != end; idx += 3)
-        bad |= (last - idx[0]) | (last - idx[1]) | (last - idx[2]);
+    if (idx != end)
+        do /* tested at the bottom: one branch a triangle */
+            bad |= (last - idx[0]) | (last - idx[1]) | (last - idx[2]);
+        while ((idx += 3) != end);
 #endif
     return (bad >> 31) == 0 && acc == 0;
 }

@@ -43,7 +43,7 @@ static int64_t mul_floor_shift(int64_t v, uint32_t inv, unsigned sh)
 void zs_project_fast_out(const zs_proj *p, int32_t xc, int32_t yc, int32_t w, zs_vert *v,
                          int inside)
 {
-    zs_project_fast(p, xc, yc, w, v, inside);
+    zs_project_body(p, xc, yc, w, v, inside, 0); /* inline here: no second call */
 }
 #endif
 
@@ -451,6 +451,68 @@ static ZS_INLINE_ALWAYS void plain_simd(plain_run *p, const uint16_t *idx, uint3
 }
 #endif
 
+#if defined(__GNUC__) && defined(__ARM_ARCH_6M__)
+#define CULL_ASM_M0 1
+/* Cortex-M0's loop for differences below 2^14 and n < 32768 (t0 the first
+ * one's number in the draw): the back
+ * faces skipped in an assembly loop of 27 instructions each (the compiler's
+ * spills a dozen values), which stops at a front face. Each vertex is one
+ * word, x in its low half: sxth(b - ax) is bx - ax (the difference fits
+ * int16), b >> 16 is by; the two products (below 2^28) compare as
+ * plain_tri's 32-bit cull. */
+static ZS_INLINE_ALWAYS void plain_m0(plain_run *p, const uint16_t *idx, uint32_t n, uint32_t t0)
+{
+    const zs_vert *const pool = p->pool;
+    const uint16_t *const start = idx, *const end = idx + 3u * n;
+    while (idx != end) {
+        uint32_t wa, wb, wc, u, v, t;
+        int32_t xmin, xmax, ymin, ymax;
+        __asm__(".syntax unified\n"
+                "1:  ldrh %[a], [%[idx], #0]\n"
+                "    ldrh %[b], [%[idx], #2]\n"
+                "    ldrh %[c], [%[idx], #4]\n"
+                "    lsls %[a], %[a], #3\n"
+                "    lsls %[b], %[b], #3\n"
+                "    lsls %[c], %[c], #3\n"
+                "    ldr %[a], [%[pool], %[a]]\n"
+                "    ldr %[b], [%[pool], %[b]]\n"
+                "    ldr %[c], [%[pool], %[c]]\n"
+                "    sxth %[u], %[a]\n"
+                "    asrs %[a], %[a], #16\n"
+                "    subs %[v], %[c], %[u]\n"
+                "    sxth %[v], %[v]\n"
+                "    subs %[u], %[b], %[u]\n"
+                "    sxth %[u], %[u]\n"
+                "    asrs %[b], %[b], #16\n"
+                "    subs %[b], %[b], %[a]\n"
+                "    asrs %[c], %[c], #16\n"
+                "    subs %[c], %[c], %[a]\n"
+                "    muls %[u], %[c], %[u]\n"
+                "    muls %[v], %[b], %[v]\n"
+                "    cmp %[u], %[v]\n"
+                "    blt 2f\n"
+                "    adds %[idx], %[idx], #6\n"
+                "    cmp %[idx], %[end]\n"
+                "    bne 1b\n"
+                "2:\n"
+                : [idx] "+l"(idx), [a] "=&l"(wa), [b] "=&l"(wb), [c] "=&l"(wc), [u] "=&l"(u),
+                  [v] "=&l"(v)
+                : [pool] "l"(pool), [end] "r"(end)
+                : "cc", "memory");
+        if (idx == end)
+            break; /* the rest were back faces: counted at the end */
+        /* t from 3 t < 98304 halfwords: (3 t * 21846) >> 16 = t + (2 t >> 16) */
+        t = t0 + (((uint32_t)(idx - start) * 21846u) >> 16);
+        {
+            const zs_vert *a = &pool[idx[0]], *b = &pool[idx[1]], *c = &pool[idx[2]];
+            box3(a, b, c, &xmin, &xmax, &ymin, &ymax);
+            plain_front(p, idx, t, a, b, c, xmin, xmax, ymin, ymax);
+        }
+        idx += 3;
+    }
+}
+#endif
+
 /* zs_setup_run's loop for the plain frame, one copy for each kind of cull. */
 static ZS_NOINLINE void setup_run_plain(zs_renderer *r, const uint16_t *idx, uint32_t n,
                                         uint16_t base, const zs_color *colors, uint32_t color)
@@ -490,8 +552,17 @@ static ZS_NOINLINE void setup_run_plain(zs_renderer *r, const uint16_t *idx, uin
 #else
     if (dim < 0) { /* no such path here */
 #endif
+#ifdef CULL_ASM_M0
+        /* in runs below 32768 triangles (plain_m0's t), one copy of the code */
+        uint32_t run;
+        for (t = 0; t < n; t += run) {
+            run = n - t < 32767u ? n - t : 32767u;
+            plain_m0(&p, idx + 3u * t, run, t);
+        }
+#else
         for (t = 0; t < n; t++, idx += 3)
             plain_tri(&p, idx, t, 1);
+#endif
     } else {
         for (t = 0; t < n; t++, idx += 3)
             plain_tri(&p, idx, t, 0);

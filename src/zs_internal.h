@@ -506,7 +506,7 @@ struct zs_proj {
 /* Number of left shifts that bring 0 < v < 2^31 into [2^30, 2^31); the
  * shifted value in *norm. Cortex-M0 has no clz instruction (a libgcc call):
  * there a binary search of five steps. */
-static inline unsigned zs_norm_shift(uint32_t v, uint32_t *norm)
+static ZS_INLINE_ALWAYS unsigned zs_norm_shift(uint32_t v, uint32_t *norm)
 {
 #if defined(__GNUC__) && __SIZEOF_INT__ == 4 && !defined(__ARM_ARCH_6M__)
     unsigned s = (unsigned)__builtin_clz(v) - 1u;

@@ -161,7 +161,7 @@ int main(void)
                 sh_printf("R %s %s %s %d instr=%lu sum=%08lx dropped=%lu\n", board, s->name,
                           mode_name(mode), f, (unsigned long)((instr_milli + 500u) / 1000u),
                           (unsigned long)sum,
-                          (unsigned long)(stt->tris_dropped + stt->verts_dropped +
+                          (unsigned long)(stt->records_dropped + stt->verts_dropped +
                                           stt->records_skipped));
             }
         }
@@ -191,7 +191,7 @@ int main(void)
                 sh_printf("R %s %s %s 0 instr=%lu sum=%08lx dropped=%lu\n", board, s->name,
                           bench_mono_names[k], (unsigned long)((b - a) * ipt / 1000u),
                           (unsigned long)sum,
-                          (unsigned long)(r.stats.tris_dropped + r.stats.verts_dropped +
+                          (unsigned long)(r.stats.records_dropped + r.stats.verts_dropped +
                                           r.stats.records_skipped));
             }
         }
@@ -218,7 +218,7 @@ int main(void)
                 sh_printf("R %s textured %s 0 instr=%lu sum=%08lx dropped=%lu\n", board,
                           bench_tex_names[k], (unsigned long)((b - a) * ipt / 1000u),
                           (unsigned long)sum,
-                          (unsigned long)(r.stats.tris_dropped + r.stats.verts_dropped +
+                          (unsigned long)(r.stats.records_dropped + r.stats.verts_dropped +
                                           r.stats.records_skipped));
             }
         }
@@ -246,7 +246,7 @@ int main(void)
                 sh_printf("R %s textured %s 0 instr=%lu sum=%08lx dropped=%lu\n", board,
                           bench_extra_names[k], (unsigned long)((b - a) * ipt / 1000u),
                           (unsigned long)sum,
-                          (unsigned long)(r.stats.tris_dropped + r.stats.verts_dropped +
+                          (unsigned long)(r.stats.records_dropped + r.stats.verts_dropped +
                                           r.stats.records_skipped + r.stats.aa_overflow +
                                           r.stats.aa_skipped));
             }

@@ -103,7 +103,7 @@ static int render_scene(const bench_scene *s, const zs_config *cfg, const zs_cam
             use->tris_dropped += stt->tris_dropped;
             use->verts_dropped += stt->verts_dropped;
             use->records_skipped += stt->records_skipped;
-            if (stt->tris_dropped || stt->verts_dropped || stt->records_skipped)
+            if (stt->records_dropped || stt->verts_dropped || stt->records_skipped)
                 use->frames_dropping++;
             if (print)
                 printf("R host %s %s %d sum=%08lx tris=%lu verts=%lu edges=%lu "

@@ -1203,12 +1203,12 @@ int sim_cmd_render(int argc, char **argv)
                        (unsigned long)s->aa_max_fragments, (unsigned long)s->aa_overflow,
                        (unsigned long)s->aa_skipped);
         }
-        if (s->tris_dropped || s->verts_dropped || s->records_skipped)
+        if (s->records_dropped || s->verts_dropped || s->records_skipped)
             fprintf(stderr,
-                    "zspan-sim: warning: pools full: %lu triangles, %lu vertices dropped, %lu "
-                    "triangles not activated (edge pool)\n",
-                    (unsigned long)s->tris_dropped, (unsigned long)s->verts_dropped,
-                    (unsigned long)s->records_skipped);
+                    "zspan-sim: warning: pools full: %lu triangles (%lu records) and %lu "
+                    "vertices dropped, %lu triangles not activated (edge pool)\n",
+                    (unsigned long)s->tris_dropped, (unsigned long)s->records_dropped,
+                    (unsigned long)s->verts_dropped, (unsigned long)s->records_skipped);
     }
     rc = SIM_EXIT_OK;
 done:

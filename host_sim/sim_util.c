@@ -16,9 +16,10 @@ void sim_print_stats(FILE *f, const zs_stats *s)
             (unsigned long)s->tris_rejected, (unsigned long)s->tris_clipped,
             (unsigned long)s->tris_empty, (unsigned long)s->tris_dropped,
             (unsigned long)s->tris_stored, (unsigned long)s->tris_drawn);
-    fprintf(f, "  vertices: %lu stored, %lu dropped; records skipped (active pool full): %lu; saturated: %lu\n",
+    fprintf(f, "  vertices: %lu stored, %lu dropped; records dropped (pools full): %lu, skipped (active pool full): %lu; saturated: %lu\n",
             (unsigned long)s->verts_stored, (unsigned long)s->verts_dropped,
-            (unsigned long)s->records_skipped, (unsigned long)s->saturated);
+            (unsigned long)s->records_dropped, (unsigned long)s->records_skipped,
+            (unsigned long)s->saturated);
     fprintf(f, "  rows: %lu, spans: %lu, max active edges: %lu, depth evals: %lu, "
                "crossings: %lu, pixels shaded: %lu\n",
             (unsigned long)s->rows, (unsigned long)s->spans, (unsigned long)s->max_active_edges,

@@ -798,8 +798,10 @@ int zs_abuffer_store(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, uint
     if (ymin + (int32_t)((uint32_t)(2 - ymin) & 3u) > ymax ||
         xmin + (int32_t)((uint32_t)(2 - xmin) & 3u) > xmax)
         return ZS_SETUP_EMPTY;
-    if (r->priv.n_tris >= r->cfg.max_triangles)
+    if (r->priv.n_tris >= r->cfg.max_triangles) {
+        r->stats.records_dropped++;
         return ZS_SETUP_DROPPED;
+    }
     t = &r->priv.tris[r->priv.n_tris];
     t->v[0] = i0;
     t->v[1] = i1;

@@ -766,9 +766,10 @@ static ZS_COLD int clip_and_setup(draw_ctx *c, uint16_t base, uint32_t t, uint16
         }
     for (k = 1; k + 1 < n; k++) {
         int piece;
-        if (v[0].pool == ZS_NONE || v[k].pool == ZS_NONE || v[k + 1].pool == ZS_NONE)
+        if (v[0].pool == ZS_NONE || v[k].pool == ZS_NONE || v[k + 1].pool == ZS_NONE) {
             piece = ZS_SETUP_DROPPED;
-        else
+            r->stats.records_dropped++;
+        } else
             piece = zs_setup_triangle(r, v[0].pool, v[k].pool, v[k + 1].pool,
                                       zs_area2(&pool[v[0].pool], &pool[v[k].pool],
                                                &pool[v[k + 1].pool]),
@@ -960,6 +961,7 @@ zs_status zs_draw(zs_renderer *r, const zs_mesh *m, const zs_mat34 *model)
         r->stats.tris_submitted++;
         if (i0 >= vfit || i1 >= vfit || i2 >= vfit) {
             r->stats.tris_dropped++;
+            r->stats.records_dropped++;
             continue;
         }
         v0 = &pool[base + i0];

@@ -250,8 +250,10 @@ int zs_setup_triangle(zs_renderer *r, uint16_t i0, uint16_t i1, uint16_t i2, int
 #endif
         return ZS_SETUP_EMPTY;
     }
-    if (r->priv.n_tris >= r->cfg.max_triangles)
+    if (r->priv.n_tris >= r->cfg.max_triangles) {
+        r->stats.records_dropped++;
         return ZS_SETUP_DROPPED; /* capacity policy: the last triangles are dropped */
+    }
     t = &r->priv.tris[r->priv.n_tris];
     t->v[0] = i0;
     t->v[1] = i1;
@@ -575,6 +577,7 @@ static ZS_NOINLINE void setup_run_plain(zs_renderer *r, const uint16_t *idx, uin
     r->stats.tris_rejected += p.rejected;
     r->stats.tris_empty += p.empty;
     r->stats.tris_dropped += p.dropped;
+    r->stats.records_dropped += p.dropped;
 }
 
 void zs_setup_run(zs_renderer *r, const uint16_t *idx, uint32_t n, uint16_t base,

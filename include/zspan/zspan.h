@@ -742,6 +742,11 @@ typedef struct zs_stats {
     uint32_t aa_skipped;       /* triangles left out of the resolve: its pool was full */
     uint32_t aa_max_fragments; /* most fragments one pixel needed (of
                                   ZS_ABUFFER_FRAGMENTS) */
+    uint32_t records_dropped;  /* triangle records (clipped pieces count one each)
+                                  lost to a full triangle or vertex pool: every
+                                  capacity drop, also a piece of a triangle that
+                                  another piece kept counted as stored; at least
+                                  tris_dropped */
 } zs_stats;
 
 /* ------------------------------------------------------------------ */

@@ -80,6 +80,40 @@ static void test_triangle_pool(void **state)
                  zs_frame_stats(&c.r)->tris_dropped);
         zt_ctx_free(&c);
     }
+    /* 2. a triangle through the near plane is cut into pieces; with room for
+     * one record the first piece is kept and the triangle counts as stored,
+     * so only records_dropped reports the pieces lost (both windings: one is
+     * the front face) */
+    {
+        zt_scene_reset(&sc);
+        int a = zt_scene_vertex_world(&sc, -3, -2, -4, 0);
+        int b = zt_scene_vertex_world(&sc, 3, -2, -4, 0);
+        int d = zt_scene_vertex_world(&sc, 0, 2, 2, 0);
+        zt_scene_tri(&sc, a, b, d, 0);
+        zt_scene_tri(&sc, a, d, b, 0);
+        zs_mesh m = zt_scene_mesh(&sc, 1, 0);
+        zt_ctx big, one;
+        zt_ctx_init(&big, RW, RH, 16, 64, 64);
+        zt_ctx_init(&one, RW, RH, 1, 64, 64);
+        zt_guarded_frame(&big, &cam, ZS_MODE_SPAN, &m, 1, NULL, f, 4);
+        ZT_ST(f->draw_st, ZS_OK);
+        uint32_t pieces = f->st.records;
+        ZT_CHECK(f->st.tris_clipped >= 1 && pieces >= 2 && f->st.records_dropped == 0,
+                 "near-plane triangle: clipped %u, %u pieces, %u records dropped with room",
+                 f->st.tris_clipped, pieces, f->st.records_dropped);
+        for (int mode = 0; mode < 2; mode++) {
+            zt_guarded_frame(&one, &cam, (zs_visibility)mode, &m, 1, NULL, f, 4);
+            ZT_ST(f->draw_st, ZS_OK);
+            ZT_CHECK(f->st.records == 1 && f->st.tris_stored == 1 && f->st.tris_dropped == 0 &&
+                         f->st.records_dropped == pieces - 1,
+                     "one record for %u pieces: records %u stored %u tris_dropped %u "
+                     "records_dropped %u",
+                     pieces, f->st.records, f->st.tris_stored, f->st.tris_dropped,
+                     f->st.records_dropped);
+        }
+        zt_ctx_free(&big);
+        zt_ctx_free(&one);
+    }
     zt_gframe_free(f);
     zt_scene_free(&sc);
 }

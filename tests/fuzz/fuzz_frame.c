@@ -735,10 +735,13 @@ static void check_stats_identity(const zs_stats *s, const zs_config *cfg)
              cfg->max_vertices);
     FZ_CHECK(s->tris_clipped <= s->tris_submitted, "clipped %u > submitted %u", s->tris_clipped,
              s->tris_submitted);
-    /* capacity policy: a dropped triangle means a full pool */
-    FZ_CHECK(s->tris_dropped == 0 || s->records == cfg->max_triangles || s->verts_dropped > 0,
-             "dropped %u triangles with room in both pools (records %u/%u, verts %u/%u)",
-             s->tris_dropped, s->records, cfg->max_triangles, s->verts_stored, cfg->max_vertices);
+    /* capacity policy: a dropped triangle or piece means a full pool, and
+     * every dropped triangle lost at least one record */
+    FZ_CHECK(s->records_dropped >= s->tris_dropped, "records_dropped %u < tris_dropped %u",
+             s->records_dropped, s->tris_dropped);
+    FZ_CHECK(s->records_dropped == 0 || s->records == cfg->max_triangles || s->verts_dropped > 0,
+             "dropped %u records with room in both pools (records %u/%u, verts %u/%u)",
+             s->records_dropped, s->records, cfg->max_triangles, s->verts_stored, cfg->max_vertices);
     FZ_CHECK(s->verts_dropped == 0 || s->verts_stored == cfg->max_vertices,
              "vertices dropped (%u) with room in the pool (%u/%u)", s->verts_dropped,
              s->verts_stored, cfg->max_vertices);
@@ -957,7 +960,7 @@ static void same_frames(const char *what, const frame_out *a, const frame_out *b
              "span and %s frames differ in format or rows", what);
 #define SAME(f) FZ_CHECK(p->f == q->f, "span " #f " %u != %s %u", p->f, what, q->f)
     SAME(tris_submitted); SAME(tris_culled); SAME(tris_rejected); SAME(tris_clipped);
-    SAME(tris_empty); SAME(tris_dropped); SAME(tris_stored); SAME(records);
+    SAME(tris_empty); SAME(tris_dropped); SAME(tris_stored); SAME(records); SAME(records_dropped);
     SAME(verts_stored); SAME(verts_dropped); SAME(saturated); SAME(rows);
     if (walk) {
         SAME(tris_drawn); SAME(records_skipped); SAME(max_active_edges);
@@ -1366,7 +1369,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
 
     /* capacity policy: large pools store a superset whose first records are ours */
-    if (g_span.st.tris_dropped > 0 && g_span.st.verts_dropped == 0) {
+    if (g_span.st.records_dropped > 0 && g_span.st.verts_dropped == 0) {
         static uint8_t big_arena[ZS_ARENA_BYTES(MAXW, MAXH, 4096, 4096, 2)];
         zs_renderer big;
         zs_config bc = zs_config_default((uint16_t)W, (uint16_t)H, 4096, 4096, 2);
@@ -1378,7 +1381,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         for (int i = 0; i < s->nmesh; i++)
             zs_draw(&big, &s->mesh[i].m, s->mesh[i].has_model ? &s->mesh[i].model : NULL);
         const zs_stats *bs = zs_frame_stats(&big);
-        FZ_CHECK(bs->verts_dropped == 0 && bs->tris_dropped == 0, "large pools dropped");
+        FZ_CHECK(bs->verts_dropped == 0 && bs->records_dropped == 0, "large pools dropped");
         FZ_CHECK(g_big_recs.n > g_span.recs.n, "large pools stored %zu records, small %zu",
                  g_big_recs.n, g_span.recs.n);
         FZ_CHECK(recs_prefix(&g_big_recs, &g_span.recs),
@@ -1471,7 +1474,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
          * stores triangles that cover sub-samples but no centre, so with a
          * small pool it can drop one that the aliased frame kept) */
         size_t rb = (size_t)W * g_aa.bpp;
-        int aa_complete = a->tris_dropped == 0 && a->verts_dropped == 0 && a->records_skipped == 0;
+        int aa_complete = a->records_dropped == 0 && a->verts_dropped == 0 && a->records_skipped == 0;
         for (int y = 0; y < H; y++)
             if (aa_complete && g_aa.rendered[y] && !near_rec[y])
                 FZ_CHECK(memcmp(g_aa.img + (size_t)y * rb, g_span.img + (size_t)y * rb, rb) == 0,

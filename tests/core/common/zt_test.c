@@ -81,8 +81,13 @@ void zt_check_accounting(const zs_stats *s, const zs_config *cfg)
              "stored %u",
              s->tris_submitted, s->tris_culled, s->tris_rejected, s->tris_empty, s->tris_dropped,
              s->tris_stored);
+    ZT_CHECK(s->records_dropped >= s->tris_dropped, "records_dropped %u < tris_dropped %u",
+             s->records_dropped, s->tris_dropped);
     if (!cfg)
         return;
+    ZT_CHECK(s->records_dropped == 0 || s->records == cfg->max_triangles || s->verts_dropped > 0,
+             "records_dropped %u with a triangle pool not full (%u of %u) and no vertex drop",
+             s->records_dropped, s->records, cfg->max_triangles);
     ZT_CHECK(s->records >= s->tris_stored, "records %u < tris_stored %u", s->records,
              s->tris_stored);
     ZT_CHECK(s->records <= cfg->max_triangles, "records %u above max_triangles %u", s->records,

@@ -499,7 +499,9 @@ static ZS_INLINE_ALWAYS void plain_m0(plain_run *p, const uint16_t *idx, uint32_
                 "2:\n"
                 : [idx] "+l"(idx), [a] "=&l"(wa), [b] "=&l"(wb), [c] "=&l"(wc), [u] "=&l"(u),
                   [v] "=&l"(v)
-                : [pool] "l"(pool), [end] "r"(end)
+                /* end high: Thumb-1 GCC reads "r" as a low register, one
+                 * past the seven left beside a frame pointer (r7) */
+                : [pool] "l"(pool), [end] "h"(end)
                 : "cc", "memory");
         if (idx == end)
             break; /* the rest were back faces: counted at the end */

@@ -428,7 +428,8 @@ static ZS_INLINE_ALWAYS int project_run(const draw_ctx *c, const inside_rows *ir
  * its corners: a mesh small on the screen), depth_scale is below 2^32 (near
  * below 3/4 of far) and near below 2^30 (zs_project_body's narrow case). */
 #if defined(__GNUC__) && defined(__thumb2__) && defined(__ARM_FEATURE_SIMD32) &&            \
-    defined(__ARM_FEATURE_IDIV) && !defined(ZS_SPLIT_MUL)
+    defined(__ARM_FEATURE_IDIV) && !defined(ZS_SPLIT_MUL) && defined(__BYTE_ORDER__) &&     \
+    __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ /* (x, y stored as the halves of one word) */
 #define PROJECT_ASM 1
 /* project_run's unchecked loop on Cortex-M4, the same arithmetic step for
  * step (fast_clip's rows, zs_recip61_fast, zs_project_body's narrow case),

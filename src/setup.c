@@ -295,7 +295,9 @@ static inline int back_face(const zs_vert *a, const zs_vert *b, const zs_vert *c
     return zs_area2_inline(a, b, c) >= 0;
 }
 
-#if defined(__ARM_FEATURE_SIMD32) && defined(ZS_WORD_STORES)
+/* (both word loops read a vertex's x as the low half of a word: little-endian only) */
+#if defined(__ARM_FEATURE_SIMD32) && defined(ZS_WORD_STORES) && defined(__BYTE_ORDER__) && \
+    __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
 #define SIMD_AREA 1
 /* Twice the area of a, b, c, for differences within int16: each vertex's x,
  * y as one word (x the low half), both differences at once (ssub16), and
@@ -453,7 +455,8 @@ static ZS_INLINE_ALWAYS void plain_simd(plain_run *p, const uint16_t *idx, uint3
 }
 #endif
 
-#if defined(__GNUC__) && defined(__ARM_ARCH_6M__)
+#if defined(__GNUC__) && defined(__ARM_ARCH_6M__) && defined(__BYTE_ORDER__) && \
+    __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
 #define CULL_ASM_M0 1
 /* Cortex-M0's loop for differences below 2^14 and n < 32768 (t0 the first
  * one's number in the draw): the back

@@ -5,7 +5,7 @@
 #   make check-project-m4
 PROJ_M4_ELF := $(FW_BUILD)/check-project-m4.elf
 PROJ_M4_HOST := $(BUILD)/tests/project-m4/host
-$(FW_BUILD)/m4/app/tests/firmware/check_project_m4.o: tests/firmware/check_project_m4.c \
+$(FW_BUILD)/m4/app/tests/firmware/check_project_m4.o: tests/firmware/check_project_m4.c tests/firmware/check_rng.h \
                                                       $(PORT_HDRS) | deps
 	@mkdir -p $(@D)
 	$(ARM_CC) $(FW_M4_CPU) -O2 $(FW_COMMON) -MMD -MP -c $< -o $@
@@ -15,7 +15,7 @@ $(PROJ_M4_ELF): $(FW_BUILD)/m4/app/tests/firmware/check_project_m4.o \
                 $(PORT_DIR)/ld/mps2-an386.ld
 	$(ARM_CC) $(FW_M4_CPU) -mthumb $(FW_LDFLAGS) -T $(PORT_DIR)/ld/mps2-an386.ld -o $@ \
 	    $(filter %.o,$^) $(FW_LIBS) > /dev/null
-$(PROJ_M4_HOST): tests/firmware/check_project_m4.c $(LIB) | deps
+$(PROJ_M4_HOST): tests/firmware/check_project_m4.c tests/firmware/check_rng.h $(LIB) | deps
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -Wall -Wextra -Werror -O2 -Iinclude -o $@ $< $(LIB)
 check-project-m4: $(PROJ_M4_ELF) $(PROJ_M4_HOST) | deps

@@ -5,13 +5,14 @@
 #   make check-frames-xtarget
 XT_DIR := $(BUILD)/tests/xtarget
 XT_SRC := tests/firmware/check_frames_xtarget.c
+XT_HDR := tests/firmware/check_rng.h
 XT_M4_ELF := $(FW_BUILD)/check-frames-m4.elf
 XT_M0_ELF := $(FW_BUILD)/check-frames-m0code.elf
 XT_HOST := $(XT_DIR)/host
-$(FW_BUILD)/m4/app/tests/firmware/check_frames_xtarget.o: $(XT_SRC) $(PORT_HDRS) | deps
+$(FW_BUILD)/m4/app/tests/firmware/check_frames_xtarget.o: $(XT_SRC) $(XT_HDR) $(PORT_HDRS) | deps
 	@mkdir -p $(@D)
 	$(ARM_CC) $(FW_M4_CPU) -O2 $(FW_COMMON) -MMD -MP -c $< -o $@
-$(FW_BUILD)/m0/app/tests/firmware/check_frames_xtarget.o: $(XT_SRC) $(PORT_HDRS) | deps
+$(FW_BUILD)/m0/app/tests/firmware/check_frames_xtarget.o: $(XT_SRC) $(XT_HDR) $(PORT_HDRS) | deps
 	@mkdir -p $(@D)
 	$(ARM_CC) $(FW_M0_CPU) -Os $(FW_COMMON) -MMD -MP -c $< -o $@
 $(XT_M4_ELF): $(FW_BUILD)/m4/app/tests/firmware/check_frames_xtarget.o \
@@ -26,7 +27,7 @@ $(XT_M0_ELF): $(FW_BUILD)/m0/app/tests/firmware/check_frames_xtarget.o \
               $(PORT_DIR)/ld/mps2-an386.ld
 	$(ARM_CC) $(FW_M0_CPU) -mthumb $(FW_LDFLAGS) -T $(PORT_DIR)/ld/mps2-an386.ld -o $@ \
 	    $(filter %.o,$^) $(FW_LIBS) > /dev/null
-$(XT_HOST): $(XT_SRC) $(LIB) | deps
+$(XT_HOST): $(XT_SRC) $(XT_HDR) $(LIB) | deps
 	@mkdir -p $(@D)
 	$(CC) -std=c99 -Wall -Wextra -Werror -O2 -Iinclude -o $@ $< $(LIB)
 check-frames-xtarget: $(XT_M4_ELF) $(XT_M0_ELF) $(XT_HOST) | deps

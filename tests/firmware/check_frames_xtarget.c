@@ -15,6 +15,7 @@
  * same everywhere. */
 #include "zspan/zspan.h"
 #include <string.h>
+#include "check_rng.h"
 #ifdef __arm__
 #include "port.h"
 #define OUT sh_printf
@@ -40,38 +41,6 @@ static uint16_t idx[MESHES][3 * MESH_T];
 static zs_color fcol[MESHES][MESH_T], vcol[MESHES][MESH_V];
 static zs_mesh meshes[MESHES];
 static zs_mat34 models[MESHES];
-static uint32_t seed = 0x5EED1234u;
-
-static uint32_t next(void)
-{
-    seed = seed * 1103515245u + 12345u;
-    return seed >> 8; /* 24 bits */
-}
-
-static int32_t range(int32_t lo, int32_t hi) /* inclusive, hi - lo < 2^24 */
-{
-    return lo + (int32_t)(next() % (uint32_t)(hi - lo + 1));
-}
-
-static uint32_t fnv_bytes(uint32_t h, const uint8_t *p, size_t n)
-{
-    while (n--) {
-        h ^= *p++;
-        h *= 0x01000193u;
-    }
-    return h;
-}
-
-static uint32_t fnv_word(uint32_t h, uint32_t w)
-{
-    uint8_t b[4];
-    b[0] = (uint8_t)w;
-    b[1] = (uint8_t)(w >> 8);
-    b[2] = (uint8_t)(w >> 16);
-    b[3] = (uint8_t)(w >> 24);
-    return fnv_bytes(h, b, 4);
-}
-
 /* Mesh k: a soup of random triangles (penetrating, any winding), a grid of
  * quads sharing edges with random heights (folds, hand-overs), or a few
  * large triangles (through the near plane, off the screen). */
@@ -170,6 +139,7 @@ int main(void)
     static const uint16_t sizes[5][2] = {{64, 48}, {96, 72}, {160, 120}, {33, 17}, {120, 90}};
     unsigned s, mismatches = 0, pixels = 0;
     unsigned long records = 0, clipped = 0, crossings = 0, evals = 0;
+    check_seed(0x5EED1234u);
     for (s = 0; s < SCENES; s++) {
         const uint16_t *wh = sizes[next() % 5u];
         zs_config cfg = zs_config_default(wh[0], wh[1], MAXT, MAXV, MAXE);

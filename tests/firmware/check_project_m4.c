@@ -15,6 +15,7 @@
 #include "zspan/zspan.h"
 #include "../../src/zs_internal.h"
 #include <string.h>
+#include "check_rng.h"
 #ifdef __arm__
 #include "port.h"
 #define OUT sh_printf
@@ -31,35 +32,13 @@ static int16_t pos[3 * MAXV];
 #define MAXT 64
 static uint16_t idx[3 * MAXT];
 static zs_color fcol[MAXT];
-static uint32_t seed = 0x2C0FFEEu;
-
-static uint32_t next(void)
-{
-    seed = seed * 1103515245u + 12345u;
-    return seed >> 8; /* 24 bits */
-}
-
-static int32_t range(int32_t lo, int32_t hi) /* inclusive, hi - lo < 2^24 */
-{
-    return lo + (int32_t)(next() % (uint32_t)(hi - lo + 1));
-}
-
-static uint32_t fnv(uint32_t h, uint32_t word)
-{
-    int k;
-    for (k = 0; k < 4; k++) {
-        h ^= (word >> (8 * k)) & 255u;
-        h *= 0x01000193u;
-    }
-    return h;
-}
-
 int main(void)
 {
     zs_renderer r;
     zs_camera cam;
     zs_config cfg = zs_config_default(240, 240, 48, MAXV + 64, 64);
     unsigned d, k, all_in = 0;
+    check_seed(0x2C0FFEEu);
     if (zs_init(&r, arena, sizeof arena, &cfg) != ZS_OK) {
         OUT("check_project_m4: zs_init failed\n");
         return 1;
@@ -119,23 +98,23 @@ int main(void)
         }
         for (k = 0; k < vc; k++) {
             const zs_vert *v = &r.priv.verts[k];
-            h = fnv(h, (uint32_t)(uint16_t)v->x | ((uint32_t)(uint16_t)v->y << 16));
-            h = fnv(h, v->z);
+            h = fnv_word(h, (uint32_t)(uint16_t)v->x | ((uint32_t)(uint16_t)v->y << 16));
+            h = fnv_word(h, v->z);
             if (v->z & ZS_VERT_UNPROJECTED)
                 inside = 0;
         }
         /* and the set-up's records and counts (the assembly cull loop) */
         for (k = 0; k < r.priv.n_tris; k++) {
             const zs_tri *t = &r.priv.tris[k];
-            h = fnv(h, (uint32_t)t->v[0] | ((uint32_t)t->v[1] << 16));
-            h = fnv(h, (uint32_t)t->v[2] | ((uint32_t)t->next << 16));
-            h = fnv(h, t->color);
+            h = fnv_word(h, (uint32_t)t->v[0] | ((uint32_t)t->v[1] << 16));
+            h = fnv_word(h, (uint32_t)t->v[2] | ((uint32_t)t->next << 16));
+            h = fnv_word(h, t->color);
         }
-        h = fnv(h, r.stats.tris_culled);
-        h = fnv(h, r.stats.tris_stored);
-        h = fnv(h, r.stats.tris_empty);
-        h = fnv(h, r.stats.tris_rejected);
-        h = fnv(h, r.stats.tris_dropped);
+        h = fnv_word(h, r.stats.tris_culled);
+        h = fnv_word(h, r.stats.tris_stored);
+        h = fnv_word(h, r.stats.tris_empty);
+        h = fnv_word(h, r.stats.tris_rejected);
+        h = fnv_word(h, r.stats.tris_dropped);
         all_in += (unsigned)inside;
         OUT("P %u %08lx\n", d, (unsigned long)h);
     }
